@@ -1,0 +1,62 @@
+#pragma once
+// A loaded and checked case: everything needed to build and run the scene, in SI
+// units and kernel types, plus where each item came from (for later error messages).
+#include <map>
+#include <string>
+#include <vector>
+
+#include "app/case/input_error.hpp"
+#include "kernel/algorithms/forward_dynamics.hpp"
+#include "kernel/integrators/integrator.hpp"
+#include "kernel/model/model_builder.hpp"
+
+namespace heavesim {
+
+/// Initial joint coordinates q (nq) and speeds v (nv), in the kernel's convention.
+struct JointInitialState {
+  VectorX q;
+  VectorX v;
+};
+
+struct SolverSettings {
+  IntegratorSettings integrator;
+  double t_start = 0.0;  // s
+  double t_end = 10.0;   // s
+  ForwardDynamicsMethod dynamics = ForwardDynamicsMethod::articulated_body;
+};
+
+struct OutputSettings {
+  double interval = 0.01;  // s between recorded samples
+  bool bodies = true;      // /bodies/<name>/position, orientation, velocity
+  bool joints = true;      // /joints/<name>/q, qd, qdd
+  bool reactions = true;   // /joints/<name>/reaction_force, reaction_moment (+ joint axes)
+  bool energy = true;      // /signals/kinetic_energy, potential_energy, total_energy
+};
+
+struct CaseDefinition {
+  std::string name;
+  std::string description;
+  std::string source_path;
+  std::string resolved_yaml;  // the case after includes and --set, as YAML text
+
+  Vector3 gravity = Vector3(0.0, 0.0, -9.81);
+  std::vector<BodyDefinition> bodies;
+  std::vector<JointDefinition> joints;
+  std::map<std::string, JointInitialState> initial_states;  // by joint name
+  SolverSettings solver;
+  OutputSettings output;
+
+  /// Source positions of bodies[i] / joints[i] and of their fields, by name.
+  std::map<std::string, std::map<std::string, SourceLocation>> body_field_locations;
+  std::map<std::string, std::map<std::string, SourceLocation>> joint_field_locations;
+  std::map<std::string, std::string> body_paths, joint_paths;
+};
+
+/// Loads, composes (includes, --set overrides) and checks a case file. Throws
+/// InputError for anything malformed; nothing is run.
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// Converts a kernel ModelError into an InputError pointing into the case.
+InputError to_input_error(const CaseDefinition& definition, const ModelError& error);
+
+}  // namespace heavesim

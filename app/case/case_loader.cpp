@@ -1,0 +1,404 @@
+// Reads the case schema documented in docs/case-format.md.
+#include <cmath>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "app/case/case_definition.hpp"
+#include "app/case/case_merge.hpp"
+#include "app/case/node_reader.hpp"
+#include "kernel/spatial/rotation.hpp"
+
+#include <filesystem>
+
+namespace heavesim {
+namespace {
+
+// ---------------------------------------------------------------- geometry
+
+/// orientation: {axis: [..], angle: ..} | {rpy: [roll, pitch, yaw]} | {quaternion: [w, x, y, z]}
+///              | {matrix: [[..], [..], [..]]}; R maps the frame's axes to its parent's.
+Matrix3 read_orientation(const NodeReader& reader) {
+  reader.expect_map({"axis", "angle", "rpy", "quaternion", "matrix"});
+  const int forms = reader.has("axis") + reader.has("rpy") + reader.has("quaternion") + reader.has("matrix");
+  if (forms != 1)
+    reader.fail("exactly one of {axis, angle}, {rpy}, {quaternion}, {matrix}");
+  if (reader.has("axis")) {
+    if (!reader.has("angle")) reader.fail("'angle' next to 'axis'");
+    return axis_angle_rotation(reader["axis"].unit_vector3(), reader["angle"].number());
+  }
+  if (reader.has("angle")) reader.fail("'angle' only together with 'axis'");
+  if (reader.has("rpy")) {
+    const Vector3 rpy = reader["rpy"].vector3();
+    return (Eigen::AngleAxisd(rpy.z(), Vector3::UnitZ()) * Eigen::AngleAxisd(rpy.y(), Vector3::UnitY()) *
+            Eigen::AngleAxisd(rpy.x(), Vector3::UnitX()))
+        .toRotationMatrix();
+  }
+  if (reader.has("quaternion")) {
+    const NodeReader q = reader["quaternion"];
+    const std::vector<double> values = q.numbers();
+    if (values.size() != 4) q.fail("a unit quaternion [w, x, y, z]");
+    const Eigen::Quaterniond quaternion(values[0], values[1], values[2], values[3]);
+    if (std::abs(quaternion.norm() - 1.0) > 1e-6)
+      q.fail(fmt::format("{} with norm {:.6g}", q.node().describe(), quaternion.norm()), "a unit quaternion [w, x, y, z]");
+    return quaternion.normalized().toRotationMatrix();
+  }
+  const NodeReader matrix_reader = reader["matrix"];
+  const std::vector<NodeReader> rows = matrix_reader.items();
+  if (rows.size() != 3) matrix_reader.fail("3 rows of 3 numbers");
+  Matrix3 R;
+  for (int r = 0; r < 3; ++r) R.row(r) = rows[r].vector3().transpose();
+  if (!(R.transpose() * R).isApprox(Matrix3::Identity(), 1e-6) || R.determinant() < 0.0)
+    matrix_reader.fail("a matrix that is not a proper rotation", "an orthonormal matrix with determinant +1");
+  return R;
+}
+
+/// frame: {position: [x, y, z], orientation: {...}}; identity when absent.
+Transform read_frame(const std::optional<NodeReader>& reader) {
+  if (!reader) return Transform::Identity();
+  reader->expect_map({"position", "orientation"});
+  Transform frame;
+  if (auto position = reader->optional("position")) frame.translation() = position->vector3();
+  if (auto orientation = reader->optional("orientation")) frame.rotation() = read_orientation(*orientation);
+  return frame;
+}
+
+// ---------------------------------------------------------------- bodies
+
+Matrix3 read_inertia(const NodeReader& reader) {
+  double ixx, iyy, izz, ixy = 0.0, ixz = 0.0, iyz = 0.0;
+  if (reader.node().is_map()) {
+    reader.expect_map({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+    ixx = reader["ixx"].number();
+    iyy = reader["iyy"].number();
+    izz = reader["izz"].number();
+    ixy = reader.number_or("ixy", 0.0);
+    ixz = reader.number_or("ixz", 0.0);
+    iyz = reader.number_or("iyz", 0.0);
+  } else {
+    const std::vector<double> values =
+        reader.node().is_sequence() ? reader.numbers() : std::vector<double>{};
+    if (values.size() != 3 && values.size() != 6)
+      reader.fail("[ixx, iyy, izz], [ixx, iyy, izz, ixy, ixz, iyz] or a map {ixx: .., ...} (kg m^2 about the CoM)");
+    ixx = values[0];
+    iyy = values[1];
+    izz = values[2];
+    if (values.size() == 6) {
+      ixy = values[3];
+      ixz = values[4];
+      iyz = values[5];
+    }
+  }
+  Matrix3 inertia;
+  inertia << ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz;
+  return inertia;
+}
+
+void read_bodies(const NodeReader& section, CaseDefinition& definition) {
+  std::set<std::string> names;
+  for (const NodeReader& body : section.items()) {
+    body.expect_map({"name", "mass", "center_of_mass", "inertia", "description"});
+    const NodeReader name_reader = body["name"];
+    const std::string name = name_reader.text();
+    if (name == ModelBuilder::ground_name) name_reader.fail("'ground', which is reserved for the world", "another name");
+    if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique body name");
+    const double mass = body["mass"].number();
+    const Vector3 com = body.optional("center_of_mass") ? body["center_of_mass"].vector3() : Vector3::Zero();
+    const Matrix3 inertia = read_inertia(body["inertia"]);
+    definition.bodies.push_back(BodyDefinition{name, Inertia(mass, com, inertia), std::nullopt});
+    definition.body_paths[name] = body.path();
+    auto& fields = definition.body_field_locations[name];
+    fields["name"] = name_reader.location();
+    fields["mass"] = body["mass"].location();
+    fields["inertia"] = body["inertia"].location();
+  }
+}
+
+// ---------------------------------------------------------------- joints
+
+JointType read_joint_type(const NodeReader& joint) {
+  const std::string type =
+      joint["type"].choice({"fixed", "revolute", "prismatic", "cylindrical", "universal", "spherical", "free"});
+  auto axis = [&]() { return joint["axis"].unit_vector3(); };
+  if (type == "fixed") return FixedJoint{};
+  if (type == "revolute") return RevoluteJoint{axis()};
+  if (type == "prismatic") return PrismaticJoint{axis()};
+  if (type == "cylindrical") return CylindricalJoint{axis()};
+  if (type == "spherical") return SphericalJoint{};
+  if (type == "free") return FreeJoint{};
+  const NodeReader axes = joint["axes"];
+  const std::vector<NodeReader> items = axes.items();
+  if (items.size() != 2) axes.fail("two unit axes [[x, y, z], [x, y, z]]");
+  UniversalJoint universal{items[0].unit_vector3(), items[1].unit_vector3()};
+  if (std::abs(universal.axis1.dot(universal.axis2)) > 1e-6)
+    axes.fail(fmt::format("axes at {:.4g} degrees", std::acos(universal.axis1.dot(universal.axis2)) * 180 / M_PI),
+              "perpendicular axes (a Hooke joint)");
+  return universal;
+}
+
+/// A number, or a list of exactly `size` numbers.
+JointVector read_joint_vector(const NodeReader& reader, int size) {
+  JointVector values(size);
+  if (reader.node().is_scalar() && size == 1) {
+    values[0] = reader.number();
+    return values;
+  }
+  const std::vector<double> numbers = reader.node().is_sequence() ? reader.numbers() : std::vector<double>{};
+  if (static_cast<int>(numbers.size()) != size)
+    reader.fail(size == 1 ? "a number" : fmt::format("a list of {} numbers", size));
+  for (int i = 0; i < size; ++i) values[i] = numbers[i];
+  return values;
+}
+
+/// Reads the raw q (nq) of a joint, checking unit quaternions.
+VectorX read_configuration(const NodeReader& reader, const JointType& type) {
+  const int nq = joint_nq(type);
+  VectorX q = read_joint_vector(reader, nq);
+  const int quaternion_offset = std::holds_alternative<SphericalJoint>(type) ? 0
+                                : std::holds_alternative<FreeJoint>(type)   ? 3
+                                                                             : -1;
+  if (quaternion_offset >= 0 && std::abs(q.segment<4>(quaternion_offset).norm() - 1.0) > 1e-6)
+    reader.fail(fmt::format("a quaternion of norm {:.6g}", q.segment<4>(quaternion_offset).norm()),
+                "a unit quaternion (w, x, y, z)");
+  return q;
+}
+
+JointInitialState read_initial_state(const std::optional<NodeReader>& reader, const JointType& type,
+                                     const std::string& type_name) {
+  const int nq = joint_nq(type), nv = joint_nv(type);
+  JointInitialState state;
+  state.q = VectorX::Zero(nq);
+  std::visit([&](const auto& joint) { joint.neutral(state.q.data()); }, type);
+  state.v = VectorX::Zero(nv);
+  if (!reader) return state;
+  const bool spherical = std::holds_alternative<SphericalJoint>(type);
+  const bool free = std::holds_alternative<FreeJoint>(type);
+  if (nv == 0) reader->fail("an initial state for a fixed joint", "no 'initial' (a fixed joint has no coordinates)");
+  if (free)
+    reader->expect_map({"q", "qd", "position", "orientation", "angular_velocity", "velocity"});
+  else if (spherical)
+    reader->expect_map({"q", "qd", "orientation", "angular_velocity"});
+  else
+    reader->expect_map({"q", "qd"});
+
+  if (auto q = reader->optional("q")) state.q = read_configuration(*q, type);
+  if (auto qd = reader->optional("qd")) state.v = read_joint_vector(*qd, nv);
+  if (reader->has("q") && (reader->has("orientation") || reader->has("position")))
+    reader->fail("'q' together with 'position'/'orientation'", "either raw 'q' or the named form");
+  if (reader->has("qd") && (reader->has("angular_velocity") || reader->has("velocity")))
+    reader->fail("'qd' together with 'velocity'/'angular_velocity'", "either raw 'qd' or the named form");
+
+  const int quaternion_offset = free ? 3 : 0;
+  Matrix3 R = Matrix3::Identity();
+  if (auto orientation = reader->optional("orientation")) {
+    R = read_orientation(*orientation);
+    write_wxyz(Eigen::Quaterniond(R), state.q.segment<4>(quaternion_offset));
+  } else if (spherical || free) {
+    R = quaternion_from_wxyz(state.q.segment<4>(quaternion_offset)).toRotationMatrix();
+  }
+  if (auto position = reader->optional("position")) state.q.head<3>() = position->vector3();
+  // Named velocities are given in the parent frame; the kernel's are child-side (body) axes.
+  if (auto omega = reader->optional("angular_velocity")) state.v.head<3>() = R.transpose() * omega->vector3();
+  if (auto velocity = reader->optional("velocity")) state.v.tail<3>() = R.transpose() * velocity->vector3();
+  (void)type_name;
+  return state;
+}
+
+JointSpringDamper read_spring(const NodeReader& reader, const JointType& type, const std::string& type_name) {
+  reader.expect_map({"stiffness", "damping", "rest"});
+  const int nq = joint_nq(type), nv = joint_nv(type);
+  if (std::holds_alternative<FreeJoint>(type) || nv == 0)
+    reader.fail("a spring on a " + type_name + " joint", "springs on revolute, prismatic, cylindrical, universal "
+                                                         "or spherical joints (use force elements for free bodies)");
+  JointSpringDamper spring;
+  spring.stiffness = reader.optional("stiffness") ? read_joint_vector(reader["stiffness"], nv) : JointVector::Zero(nv);
+  spring.damping = reader.optional("damping") ? read_joint_vector(reader["damping"], nv) : JointVector::Zero(nv);
+  for (const auto& [values, key] : {std::pair{&spring.stiffness, "stiffness"}, std::pair{&spring.damping, "damping"}})
+    if ((values->array() < 0.0).any()) reader[key].fail("a negative value", "values >= 0");
+  spring.rest = JointVector::Zero(nq);
+  std::visit([&](const auto& joint) { joint.neutral(spring.rest.data()); }, type);
+  if (auto rest = reader.optional("rest")) {
+    if (std::holds_alternative<SphericalJoint>(type))
+      write_wxyz(Eigen::Quaterniond(read_orientation(*rest)), spring.rest.head<4>());
+    else
+      spring.rest = read_joint_vector(*rest, nq);
+  }
+  return spring;
+}
+
+JointLimits read_limits(const NodeReader& reader, const JointType& type, const std::string& type_name) {
+  reader.expect_map({"lower", "upper", "stiffness", "damping"});
+  if (joint_nv(type) != 1 || !joint_has_scalar_coordinates(type))
+    reader.fail("limits on a " + type_name + " joint", "limits on revolute or prismatic joints only");
+  JointLimits limits;
+  limits.lower = reader.number_or("lower", -INFINITY);
+  limits.upper = reader.number_or("upper", INFINITY);
+  if (!(limits.lower < limits.upper))
+    reader.fail(fmt::format("lower = {:g} not below upper = {:g}", limits.lower, limits.upper), "lower < upper");
+  limits.stiffness = reader["stiffness"].positive_number();
+  limits.damping = reader.optional("damping") ? reader["damping"].non_negative_number() : 0.0;
+  return limits;
+}
+
+void read_joints(const NodeReader& section, CaseDefinition& definition) {
+  std::set<std::string> names;
+  for (const NodeReader& joint : section.items()) {
+    joint.expect_map({"name", "type", "parent", "child", "parent_frame", "child_frame", "axis", "axes", "initial",
+                      "spring", "limits", "description"});
+    const NodeReader name_reader = joint["name"];
+    const std::string name = name_reader.text();
+    if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique joint name");
+    JointDefinition def;
+    def.name = name;
+    def.type = read_joint_type(joint);
+    const std::string type_name = joint_type_name(def.type);
+    const bool uses_axis = std::holds_alternative<RevoluteJoint>(def.type) ||
+                           std::holds_alternative<PrismaticJoint>(def.type) ||
+                           std::holds_alternative<CylindricalJoint>(def.type);
+    if (!uses_axis && joint.has("axis"))
+      joint["axis"].fail("an axis on a " + type_name + " joint", "no 'axis' (only revolute, prismatic, cylindrical)");
+    if (!std::holds_alternative<UniversalJoint>(def.type) && joint.has("axes"))
+      joint["axes"].fail("'axes' on a " + type_name + " joint", "no 'axes' (only universal joints)");
+    def.parent = joint["parent"].text();
+    def.child = joint["child"].text();
+    def.X_parent_joint = read_frame(joint.optional("parent_frame"));
+    def.X_child_joint = read_frame(joint.optional("child_frame"));
+    if (auto spring = joint.optional("spring")) def.spring = read_spring(*spring, def.type, type_name);
+    if (auto limits = joint.optional("limits")) def.limits = read_limits(*limits, def.type, type_name);
+    definition.initial_states[name] = read_initial_state(joint.optional("initial"), def.type, type_name);
+    definition.joint_paths[name] = joint.path();
+    auto& fields = definition.joint_field_locations[name];
+    fields["name"] = name_reader.location();
+    fields["parent"] = joint["parent"].location();
+    fields["child"] = joint["child"].location();
+    if (joint.has("spring")) fields["spring"] = joint["spring"].location();
+    if (joint.has("limits")) fields["limits"] = joint["limits"].location();
+    definition.joints.push_back(std::move(def));
+  }
+}
+
+// ---------------------------------------------------------------- solver, output
+
+void read_solver(const NodeReader& reader, CaseDefinition& definition) {
+  reader.expect_map({"integrator", "t_start", "t_end", "step", "rtol", "atol", "max_step", "max_steps", "dynamics"});
+  SolverSettings& solver = definition.solver;
+  if (auto integrator = reader.optional("integrator")) {
+    const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida"});
+    solver.integrator.method = method == "rk4"       ? IntegrationMethod::rk4
+                               : method == "dopri5"  ? IntegrationMethod::dopri5
+                               : method == "verner6" ? IntegrationMethod::verner6
+                               : method == "fehlberg8" ? IntegrationMethod::fehlberg8
+                                                       : IntegrationMethod::ida;
+  }
+  solver.t_start = reader.number_or("t_start", 0.0);
+  solver.t_end = reader["t_end"].number();
+  if (!(solver.t_end > solver.t_start))
+    reader["t_end"].fail(fmt::format("t_end = {:g} not after t_start = {:g}", solver.t_end, solver.t_start),
+                         "t_end > t_start (seconds)");
+  if (auto step = reader.optional("step")) {
+    solver.integrator.step = step->positive_number();
+    if (solver.integrator.step > solver.t_end - solver.t_start)
+      step->fail(fmt::format("a step of {:g} s longer than the run", solver.integrator.step), "step <= t_end - t_start");
+  } else if (solver.integrator.method == IntegrationMethod::rk4) {
+    reader["step"];  // required for the fixed-step method: raises the missing-key error
+  }
+  if (auto rtol = reader.optional("rtol")) {
+    solver.integrator.relative_tolerance = rtol->positive_number();
+    if (solver.integrator.relative_tolerance >= 1.0) rtol->fail("a relative tolerance >= 1", "0 < rtol < 1");
+    if (solver.integrator.relative_tolerance < 1e-15) rtol->fail("a tolerance below machine precision", "rtol >= 1e-15");
+  }
+  if (auto atol = reader.optional("atol")) solver.integrator.absolute_tolerance = atol->positive_number();
+  if (auto max_step = reader.optional("max_step")) solver.integrator.max_step = max_step->non_negative_number();
+  if (auto max_steps = reader.optional("max_steps")) {
+    solver.integrator.max_steps_per_output = max_steps->integer();
+    if (solver.integrator.max_steps_per_output <= 0) max_steps->fail("a positive whole number");
+  }
+  if (auto dynamics = reader.optional("dynamics"))
+    solver.dynamics = dynamics->choice({"articulated_body", "composite_rigid_body"}) == "articulated_body"
+                          ? ForwardDynamicsMethod::articulated_body
+                          : ForwardDynamicsMethod::composite_rigid_body;
+}
+
+void read_output(const std::optional<NodeReader>& reader, CaseDefinition& definition) {
+  OutputSettings& output = definition.output;
+  const double duration = definition.solver.t_end - definition.solver.t_start;
+  output.interval = std::min(0.01, duration / 100.0);
+  if (!reader) return;
+  reader->expect_map({"interval", "channels"});
+  if (auto interval = reader->optional("interval")) {
+    output.interval = interval->positive_number();
+    if (output.interval > duration)
+      interval->fail(fmt::format("an interval of {:g} s longer than the run", output.interval),
+                     "interval <= t_end - t_start");
+  }
+  if (auto channels = reader->optional("channels")) {
+    output.bodies = output.joints = output.reactions = output.energy = false;
+    for (const NodeReader& channel : channels->items()) {
+      const std::string which = channel.choice({"bodies", "joints", "reactions", "energy"});
+      output.bodies |= which == "bodies";
+      output.joints |= which == "joints";
+      output.reactions |= which == "reactions";
+      output.energy |= which == "energy";
+    }
+  }
+}
+
+void read_parameters(const std::optional<NodeReader>& reader, ExpressionContext& expressions) {
+  if (!reader) return;
+  if (!reader->node().is_map()) reader->fail("a map of name: value");
+  for (const CaseNode::Entry& entry : reader->node().entries) {
+    const NodeReader value = (*reader)[entry.key];
+    const bool identifier = !entry.key.empty() && (std::isalpha(entry.key[0]) || entry.key[0] == '_') &&
+                            std::all_of(entry.key.begin(), entry.key.end(),
+                                        [](char c) { return std::isalnum(c) || c == '_'; });
+    if (!identifier || entry.key == "pi" || entry.key == "t")
+      throw InputError(entry.key_location, value.path(), "parameter name '" + entry.key + "'",
+                       "a name of letters, digits and _ (not 'pi' or 't')");
+    expressions.define(entry.key, value.number());
+  }
+}
+
+}  // namespace
+
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides) {
+  CaseNode tree = load_case_tree(path);
+  for (const std::string& assignment : overrides) apply_override(tree, assignment);
+
+  CaseDefinition definition;
+  definition.source_path = path;
+  definition.resolved_yaml = to_yaml_text(tree);
+  ExpressionContext expressions;
+  const NodeReader root(tree, "", expressions);
+  root.expect_map({"name", "description", "parameters", "environment", "bodies", "joints", "solver", "output"});
+
+  definition.name = root.optional("name") ? root["name"].text() : std::filesystem::path(path).stem().string();
+  if (auto description = root.optional("description")) definition.description = description->text();
+  read_parameters(root.optional("parameters"), expressions);
+  if (auto environment = root.optional("environment")) {
+    environment->expect_map({"gravity"});
+    if (auto gravity = environment->optional("gravity")) definition.gravity = gravity->vector3();
+  }
+  read_bodies(root["bodies"], definition);
+  read_joints(root["joints"], definition);
+  read_solver(root["solver"], definition);
+  read_output(root.optional("output"), definition);
+  return definition;
+}
+
+InputError to_input_error(const CaseDefinition& definition, const ModelError& error) {
+  const bool body = error.kind() == ModelError::ItemKind::body;
+  const auto& paths = body ? definition.body_paths : definition.joint_paths;
+  const auto& locations = body ? definition.body_field_locations : definition.joint_field_locations;
+  SourceLocation location{definition.source_path, 0, 0};
+  std::string key_path;
+  if (auto it = paths.find(error.item()); it != paths.end()) key_path = it->second + "." + error.field();
+  if (auto it = locations.find(error.item()); it != locations.end()) {
+    if (auto field = it->second.find(error.field()); field != it->second.end())
+      location = field->second;
+    else if (auto name = it->second.find("name"); name != it->second.end())
+      location = name->second;
+  }
+  return InputError(location, key_path, error.found(), error.expected());
+}
+
+}  // namespace heavesim

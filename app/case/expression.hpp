@@ -1,0 +1,33 @@
+#pragma once
+// Numbers in case files may be expressions (muParser): "deg(90)", "pi/2",
+// "0.5 * L" with user parameters, and "8 + 3*sin(t)" for drivers.
+#include <map>
+#include <memory>
+#include <string>
+
+namespace mu {
+class Parser;
+}
+
+namespace heavesim {
+
+class ExpressionContext {
+ public:
+  ExpressionContext();
+  ~ExpressionContext();
+  ExpressionContext(const ExpressionContext&) = delete;
+  ExpressionContext& operator=(const ExpressionContext&) = delete;
+
+  /// Defines (or redefines) a named parameter usable in later expressions.
+  void define(const std::string& name, double value);
+  bool defines(const std::string& name) const { return parameters_.count(name) > 0; }
+
+  /// Value of a number or expression; throws std::invalid_argument with muParser's reason.
+  double evaluate(const std::string& text) const;
+
+ private:
+  std::unique_ptr<mu::Parser> parser_;
+  std::map<std::string, double> parameters_;  // node-based: addresses stay valid for muParser
+};
+
+}  // namespace heavesim

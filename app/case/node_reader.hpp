@@ -1,0 +1,63 @@
+#pragma once
+// Typed, path-aware reading of a CaseNode: every failure becomes an InputError
+// naming the file position, the key path, what was found and what was expected.
+#include <initializer_list>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/case/case_node.hpp"
+#include "app/case/expression.hpp"
+#include "kernel/spatial/types.hpp"
+
+namespace heavesim {
+
+/// The closest of `candidates` to `word` within a small edit distance, or "".
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+class NodeReader {
+ public:
+  NodeReader(const CaseNode& node, std::string path, const ExpressionContext& expressions)
+      : node_(&node), path_(std::move(path)), expressions_(&expressions) {}
+
+  const CaseNode& node() const { return *node_; }
+  const std::string& path() const { return path_; }
+  const SourceLocation& location() const { return node_->location; }
+
+  // --- maps ---
+  /// Requires a map whose keys are all in `allowed` (unknown keys: did-you-mean).
+  void expect_map(std::initializer_list<std::string_view> allowed) const;
+  bool has(const std::string& key) const;
+  /// A required entry.
+  NodeReader operator[](const std::string& key) const;
+  std::optional<NodeReader> optional(const std::string& key) const;
+
+  // --- scalars ---
+  double number() const;
+  double number_or(const std::string& key, double default_value) const;
+  double positive_number() const;
+  double non_negative_number() const;
+  long integer() const;
+  std::string text() const;
+  bool boolean() const;
+  /// One of `options`; anything else is an error with a did-you-mean.
+  std::string choice(std::initializer_list<std::string_view> options) const;
+
+  // --- sequences ---
+  std::vector<NodeReader> items() const;
+  std::vector<double> numbers() const;
+  Vector3 vector3() const;
+  /// A 3-vector of length 1 (tolerance 1e-6).
+  Vector3 unit_vector3() const;
+
+  [[noreturn]] void fail(const std::string& expected) const;
+  [[noreturn]] void fail(const std::string& found, const std::string& expected) const;
+
+ private:
+  const CaseNode* node_;
+  std::string path_;
+  const ExpressionContext* expressions_;
+};
+
+}  // namespace heavesim

@@ -1,0 +1,55 @@
+#include <fmt/format.h>
+
+#include "app/case/case_definition.hpp"
+#include "app/commands/commands.hpp"
+#include "app/scene/scene.hpp"
+
+namespace heavesim {
+
+int check_command(const std::string& case_path, const std::vector<std::string>& overrides) {
+  const CaseDefinition definition = load_case(case_path, overrides);
+  const Scene scene = build_scene(definition);
+  const Model& model = *scene.model;
+
+  fmt::print("case '{}' ({})\n", definition.name, case_path);
+  if (!definition.description.empty()) fmt::print("  {}\n", definition.description);
+  fmt::print("model: {} bodies, {} joints, {} degrees of freedom (nq = {}, nv = {}), 0 kinematic loops, "
+             "total mass {:.6g} kg\n",
+             model.num_links() - 1, model.num_links() - 1, model.nv, model.nq, model.nv, model.total_mass());
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    const Link& link = model.links[i];
+    fmt::print("  joint {:<16} {:<11} {:>12} -> {:<16} dof {}{}{}   body mass {:.6g} kg\n", joint.name,
+               joint_type_name(joint.type), model.links[joint.parent].name, link.name, joint.nv,
+               joint.spring ? ", spring-damper" : "", joint.limits ? ", limits" : "", link.inertia.mass());
+  }
+  fmt::print("forces: gravity [{:g}, {:g}, {:g}] m/s^2", model.gravity.x(), model.gravity.y(), model.gravity.z());
+  int springs = 0, limits = 0;
+  for (int i = 1; i < model.num_links(); ++i) {
+    springs += model.joints[i].spring.has_value();
+    limits += model.joints[i].limits.has_value();
+  }
+  if (springs) fmt::print("; {} joint spring-dampers", springs);
+  if (limits) fmt::print("; {} joint limits", limits);
+  fmt::print("; {} force elements\n", scene.system->force_elements().size());
+
+  const SolverSettings& solver = definition.solver;
+  const IntegratorSettings& integrator = solver.integrator;
+  fmt::print("solver: {} ", integration_method_name(integrator.method));
+  if (integrator.method == IntegrationMethod::rk4)
+    fmt::print("step {:g} s", integrator.step);
+  else
+    fmt::print("rtol {:g}, atol {:g}", integrator.relative_tolerance, integrator.absolute_tolerance);
+  fmt::print(", t = {:g} .. {:g} s, forward dynamics by {}\n", solver.t_start, solver.t_end,
+             solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA" : "CRBA + Cholesky");
+  const OutputSettings& output = definition.output;
+  fmt::print("outputs every {:g} s:{}{}{}{}\n", output.interval, output.bodies ? " bodies" : "",
+             output.joints ? " joints" : "", output.reactions ? " reactions (one extra RNEA pass per sample)" : "",
+             output.energy ? " energy" : "");
+  fmt::print("state size {}: evaluated per step: kinematics, {}, {}\n", scene.system->size(),
+             solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA" : "CRBA + RNEA",
+             springs + limits ? "joint elements" : "no joint elements");
+  return 0;
+}
+
+}  // namespace heavesim

@@ -1,0 +1,21 @@
+#pragma once
+// The heavesim subcommands. Each returns the process exit code:
+// 0 success, 2 bad input, 3 numerical failure, 1 anything else.
+#include <string>
+#include <vector>
+
+namespace heavesim {
+
+struct RunOptions {
+  std::string case_path;
+  std::string output_path;             // default results/<case name>.h5
+  std::string csv_directory;           // empty: no CSV
+  std::vector<std::string> overrides;  // --set key=value
+  bool quiet = false;
+};
+
+int run_command(const RunOptions& options);
+int check_command(const std::string& case_path, const std::vector<std::string>& overrides);
+int validate_command(const std::vector<std::string>& names, bool list_only);
+
+}  // namespace heavesim

@@ -1,0 +1,64 @@
+#include "app/commands/result_metadata.hpp"
+
+#include <openssl/evp.h>
+
+#include <chrono>
+#include <ctime>
+
+#include <fmt/format.h>
+
+#include "app/version.hpp"
+
+namespace heavesim {
+namespace {
+
+/// SHA-256 of the resolved case text (OpenSSL), to identify the exact input of a result.
+std::string sha256_hex(const std::string& message) {
+  unsigned char digest[EVP_MAX_MD_SIZE];
+  unsigned int length = 0;
+  EVP_Digest(message.data(), message.size(), digest, &length, EVP_sha256(), nullptr);
+  std::string hex;
+  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
+  return hex;
+}
+
+std::string utc_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+}  // namespace
+
+void write_result_metadata(ResultFile& file, const CaseDefinition& definition) {
+  file.set_attribute("/", "heavesim_version", std::string(heavesim_version));
+  file.set_attribute("/", "case_name", definition.name);
+  file.set_attribute("/", "case_file", definition.source_path);
+  file.set_attribute("/", "case_sha256", sha256_hex(definition.resolved_yaml));
+  file.set_attribute("/", "created_utc", utc_now());
+  file.set_attribute("/", "complete", 0L);
+  file.set_attribute("/", "units_system", std::string("SI"));
+  file.set_attribute("/", "frames", std::string("world: Z up, origin on the mean free surface; "
+                                                "spatial vectors [angular; linear]; quaternions w, x, y, z"));
+  file.write_text("/case/yaml", definition.resolved_yaml, "the resolved case (after include and --set)");
+  file.flush();
+}
+
+void write_run_statistics(ResultFile& file, const IntegratorStatistics& statistics, double wall_seconds,
+                          double simulated_seconds) {
+  file.set_attribute("/summary", "integrator_steps", statistics.steps);
+  file.set_attribute("/summary", "rhs_evaluations", statistics.rhs_evaluations);
+  file.set_attribute("/summary", "jacobian_evaluations", statistics.jacobian_evaluations);
+  file.set_attribute("/summary", "error_test_failures", statistics.error_test_failures);
+  file.set_attribute("/summary", "nonlinear_iterations", statistics.nonlinear_iterations);
+  file.set_attribute("/summary", "convergence_failures", statistics.convergence_failures);
+  file.set_attribute("/summary", "wall_time_s", wall_seconds);
+  file.set_attribute("/summary", "simulated_time_s", simulated_seconds);
+  file.set_attribute("/summary", "real_time_factor", wall_seconds > 0.0 ? simulated_seconds / wall_seconds : 0.0);
+  file.flush();
+}
+
+}  // namespace heavesim

@@ -1,0 +1,17 @@
+#pragma once
+// Root attributes and run statistics of a result file (the contract in docs/result-file.md).
+#include "app/case/case_definition.hpp"
+#include "app/output/result_file.hpp"
+#include "kernel/integrators/integrator.hpp"
+
+namespace heavesim {
+
+/// heavesim_version, case_name, case_sha256, created_utc, complete = 0, units_system,
+/// and /case/yaml (the resolved case text).
+void write_result_metadata(ResultFile& file, const CaseDefinition& definition);
+
+/// Integrator statistics and timing in /summary.
+void write_run_statistics(ResultFile& file, const IntegratorStatistics& statistics, double wall_seconds,
+                          double simulated_seconds);
+
+}  // namespace heavesim

@@ -1,0 +1,60 @@
+// heavesim command line: run, check, validate (see docs/ and README.md).
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <exception>
+
+#include "app/case/input_error.hpp"
+#include "app/commands/commands.hpp"
+#include "app/version.hpp"
+#include "kernel/system/ode_system.hpp"
+
+int main(int argc, char** argv) {
+  using namespace heavesim;
+  CLI::App app{"heavesim: offshore heave-compensation simulator (multibody kernel with joint reactions)"};
+  app.set_version_flag("--version", std::string(heavesim_version));
+  app.require_subcommand(1);
+
+  RunOptions run_options;
+  CLI::App* run = app.add_subcommand("run", "run one case and write its HDF5 result file");
+  run->add_option("case", run_options.case_path, "case file (YAML)")->required();
+  run->add_option("-o,--output", run_options.output_path, "result file (default results/<case name>.h5)");
+  run->add_option("--csv", run_options.csv_directory, "also write <case name>.csv into this directory");
+  run->add_option("--set", run_options.overrides, "override a case value: key.path=value (repeatable)");
+  run->add_flag("-q,--quiet", run_options.quiet, "no progress line and no summary");
+
+  std::string check_path;
+  std::vector<std::string> check_overrides;
+  CLI::App* check = app.add_subcommand("check", "load and check a case without running it; print the model");
+  check->add_option("case", check_path, "case file (YAML)")->required();
+  check->add_option("--set", check_overrides, "override a case value: key.path=value (repeatable)");
+
+  std::vector<std::string> validation_names;
+  bool list_only = false;
+  CLI::App* validate = app.add_subcommand("validate", "run the validation suite and print a PASS/FAIL table");
+  validate->add_option("names", validation_names, "checks to run (e.g. K1 K3); default all");
+  validate->add_flag("--list", list_only, "list the checks without running them");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+
+  try {
+    if (*run) return run_command(run_options);
+    if (*check) return check_command(check_path, check_overrides);
+    if (*validate) return validate_command(validation_names, list_only);
+  } catch (const InputError& e) {
+    fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
+    return 2;
+  } catch (const NumericalError& e) {
+    fmt::print(stderr, "heavesim: numerical failure at t = {:.6g} s: {}\n  suggestion: {}\n", e.time(), e.what(),
+               e.suggestion());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "heavesim: error: {}\n", e.what());
+    return 1;
+  }
+  return 1;
+}

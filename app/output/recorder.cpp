@@ -1,0 +1,191 @@
+#include "app/output/recorder.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "kernel/algorithms/energy.hpp"
+#include "kernel/algorithms/joint_forces.hpp"
+#include "kernel/algorithms/joint_reactions.hpp"
+
+namespace heavesim {
+namespace {
+
+std::string coordinate_units(const JointType& type) {
+  return std::visit(
+      [](const auto& joint) -> std::string {
+        using J = std::decay_t<decltype(joint)>;
+        if constexpr (std::is_same_v<J, PrismaticJoint>) return "m";
+        if constexpr (std::is_same_v<J, CylindricalJoint>) return "rad, m";
+        if constexpr (std::is_same_v<J, SphericalJoint>) return "- (quaternion w, x, y, z)";
+        if constexpr (std::is_same_v<J, FreeJoint>) return "m, - (x, y, z, quaternion w, x, y, z)";
+        return "rad";
+      },
+      type);
+}
+
+/// Units of joint speeds; `per` = "/s" gives accelerations.
+std::string speed_units(const JointType& type, const std::string& per) {
+  return std::visit(
+      [&per](const auto& joint) -> std::string {
+        using J = std::decay_t<decltype(joint)>;
+        if constexpr (std::is_same_v<J, PrismaticJoint>) return "m/s" + per;
+        if constexpr (std::is_same_v<J, CylindricalJoint>) return "rad/s" + per + ", m/s" + per;
+        if constexpr (std::is_same_v<J, FreeJoint>) return "rad/s" + per + ", m/s" + per;
+        return "rad/s" + per;
+      },
+      type);
+}
+
+}  // namespace
+
+Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
+    : scene_(scene), file_(file), csv_(csv) {
+  define_channels(definition);
+  if (csv_) {
+    std::vector<std::string> header;
+    for (const Channel& channel : channels_)
+      for (const std::string& label : channel.labels) header.push_back(channel.path.substr(1) + label);
+    csv_->write_header(header);
+  }
+}
+
+void Recorder::add(Channel channel) {
+  const int width = std::max(channel.columns, 1);
+  if (channel.labels.empty()) {
+    if (channel.columns == 0)
+      channel.labels = {""};
+    else
+      for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
+  }
+  channel.statistics = RunningStatistics(width);
+  if (file_) channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
+  channels_.push_back(std::move(channel));
+}
+
+void Recorder::define_channels(const CaseDefinition& definition) {
+  const OutputSettings& output = definition.output;
+  const Model& model = *scene_.model;
+  const MultibodySystem& system = *scene_.system;
+  const std::vector<std::string> xyz = {".x", ".y", ".z"};
+
+  add({"/time", 0, "s", "simulation time", {}, [](double t, double* out) { out[0] = t; }});
+
+  if (output.bodies) {
+    for (int i = 1; i < model.num_links(); ++i) {
+      const std::string base = "/bodies/" + model.links[i].name;
+      auto X_world_body = [&system, i]() {
+        return system.data().X_world_link[i] * system.model().links[i].X_link_body;
+      };
+      add({base + "/position", 3, "m", "body reference point (body frame origin), world frame", xyz,
+           [X_world_body](double, double* out) { map3(out) = X_world_body().translation(); }});
+      add({base + "/orientation", 4, "-", "unit quaternion w, x, y, z of the body frame, body -> world",
+           {".w", ".x", ".y", ".z"}, [X_world_body](double, double* out) {
+             const Eigen::Quaterniond q(X_world_body().rotation());
+             out[0] = q.w(); out[1] = q.x(); out[2] = q.y(); out[3] = q.z();
+           }});
+      add({base + "/velocity", 6, "rad/s, m/s",
+           "[angular velocity; velocity of the body reference point], world axes",
+           {".wx", ".wy", ".wz", ".vx", ".vy", ".vz"}, [&system, X_world_body, i](double, double* out) {
+             const Motion& v = system.data().velocity_world[i];
+             map3(out) = v.angular();
+             map3(out + 3) = v.point_velocity(X_world_body().translation());
+           }});
+    }
+  }
+
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    const std::string base = "/joints/" + joint.name;
+    const std::string type = joint_type_name(joint.type);
+    if (output.joints && joint.nv > 0) {
+      add({base + "/q", joint.nq, coordinate_units(joint.type),
+           type + " joint coordinates (order in docs/result-file.md)", {}, [&system, joint](double, double* out) {
+             Eigen::Map<VectorX>(out, joint.nq) = system.configuration().segment(joint.q_index, joint.nq);
+           }});
+      add({base + "/qd", joint.nv, speed_units(joint.type, ""),
+           type + " joint speeds (child-side axes for spherical and free joints)", {},
+           [&system, joint](double, double* out) {
+             Eigen::Map<VectorX>(out, joint.nv) = system.velocity().segment(joint.v_index, joint.nv);
+           }});
+      add({base + "/qdd", joint.nv, speed_units(joint.type, "/s"), type + " joint accelerations", {},
+           [&system, joint](double, double* out) {
+             Eigen::Map<VectorX>(out, joint.nv) = system.data().qdd.segment(joint.v_index, joint.nv);
+           }});
+    }
+    if (output.reactions) {
+      needs_reactions_ = true;
+      reaction_joints_.push_back(i);
+      peak_reactions_.emplace_back(joint.name, 0.0);
+      add({base + "/reaction_force", 3, "N",
+           "force exerted by the parent on the child at the joint origin, world axes", xyz,
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).force_world; }});
+      add({base + "/reaction_moment", 3, "N m",
+           "moment exerted by the parent on the child about the joint origin, world axes", xyz,
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).moment_world; }});
+      add({base + "/reaction_force_joint", 3, "N",
+           "force exerted by the parent on the child, joint (child-side) axes", xyz,
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).force_joint; }});
+      add({base + "/reaction_moment_joint", 3, "N m",
+           "moment exerted by the parent on the child about the joint origin, joint (child-side) axes", xyz,
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).moment_joint; }});
+    }
+  }
+
+  if (output.energy) {
+    add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
+         [&system](double, double* out) { out[0] = kinetic_energy(system.model(), system.data()); }});
+    add({"/signals/potential_energy", 0, "J", "gravitational plus joint-spring potential energy", {},
+         [&system](double, double* out) {
+           out[0] = gravity_potential_energy(system.model(), system.data()) +
+                    joint_elastic_energy(system.model(), system.configuration());
+         }});
+    add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {}, [&system](double, double* out) {
+           out[0] = kinetic_energy(system.model(), system.data()) +
+                    gravity_potential_energy(system.model(), system.data()) +
+                    joint_elastic_energy(system.model(), system.configuration());
+         }});
+  }
+}
+
+void Recorder::record(double t, const VectorX& y) {
+  scene_.system->evaluate(t, y, needs_reactions_);
+  csv_row_.clear();
+  for (Channel& channel : channels_) {
+    row_.resize(std::max(channel.columns, 1));
+    channel.fill(t, row_.data());
+    channel.statistics.add(row_.data());
+    if (file_) file_->append(channel.series, row_.data());
+    if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
+  }
+  if (csv_) csv_->write_row(csv_row_);
+
+  const MultibodySystem& system = *scene_.system;
+  for (std::size_t k = 0; k < reaction_joints_.size(); ++k)
+    peak_reactions_[k].second =
+        std::max(peak_reactions_[k].second, joint_reaction(system.data(), reaction_joints_[k]).force_world.norm());
+  const double kinetic = kinetic_energy(system.model(), system.data());
+  const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
+                        joint_elastic_energy(system.model(), system.configuration());
+  if (samples_ == 0) initial_energy_ = energy;
+  max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
+  const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
+  if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
+  ++samples_;
+}
+
+void Recorder::finish() {
+  if (!file_) return;
+  for (const Channel& channel : channels_) {
+    file_->set_attribute(channel.path, "minimum", channel.statistics.minimum());
+    file_->set_attribute(channel.path, "maximum", channel.statistics.maximum());
+    file_->set_attribute(channel.path, "mean", channel.statistics.mean());
+    file_->set_attribute(channel.path, "standard_deviation", channel.statistics.standard_deviation());
+  }
+  file_->set_attribute("/summary", "samples", samples_);
+  file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
+  for (const auto& [joint, peak] : peak_reactions_)
+    file_->set_attribute("/summary", "peak_reaction_force_" + joint, peak);
+  file_->flush();
+}
+
+}  // namespace heavesim

@@ -1,0 +1,55 @@
+#pragma once
+// The HDF5 result file (contract in docs/result-file.md): time series that grow in
+// chunks as the run goes and are flushed to disk, so that a run stopped early still
+// leaves a readable file with complete = 0.
+#include <hdf5.h>
+
+#include <string>
+#include <vector>
+
+namespace heavesim {
+
+class ResultFile {
+ public:
+  /// Creates (truncates) the file; throws std::runtime_error if it cannot.
+  explicit ResultFile(const std::string& path);
+  ~ResultFile();
+  ResultFile(const ResultFile&) = delete;
+  ResultFile& operator=(const ResultFile&) = delete;
+
+  const std::string& path() const { return path_; }
+
+  void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
+  void set_attribute(const std::string& object_path, const std::string& name, double value);
+  void set_attribute(const std::string& object_path, const std::string& name, long value);
+  void set_attribute(const std::string& object_path, const std::string& name, const std::vector<double>& values);
+
+  /// A fixed string dataset (e.g. /case/yaml).
+  void write_text(const std::string& dataset_path, const std::string& text, const std::string& description);
+
+  /// A growing series: shape (N) when columns == 0, else (N, columns).
+  /// Returns its id for append(); `units` and `description` become attributes.
+  int add_series(const std::string& dataset_path, int columns, const std::string& units,
+                 const std::string& description);
+  /// Appends one row (max(columns, 1) values) to the in-memory buffer.
+  void append(int series, const double* row);
+  /// Writes buffered rows of every series and flushes the file to disk.
+  void flush();
+
+ private:
+  struct Series {
+    hid_t dataset = -1;
+    int columns = 0;
+    hsize_t rows_written = 0;
+    std::vector<double> buffer;
+  };
+  hid_t ensure_parent_groups(const std::string& path);
+  hid_t open_object(const std::string& object_path);
+
+  std::string path_;
+  hid_t file_ = -1;
+  std::vector<Series> series_;
+  static constexpr hsize_t chunk_rows = 1024;
+};
+
+}  // namespace heavesim

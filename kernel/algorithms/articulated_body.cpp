@@ -1,0 +1,80 @@
+#include "kernel/algorithms/articulated_body.hpp"
+
+namespace heavesim {
+
+const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
+                                                 ExternalForces external_forces_world) {
+  const int n = model.num_links();
+  for (int i = 1; i < n; ++i) {
+    data.articulated_inertia_world[i] = data.inertia_world[i];
+    data.articulated_bias_world[i] = data.bias_force_world[i] - data.gravity_force_world[i];
+    if (!external_forces_world.empty()) data.articulated_bias_world[i] -= external_forces_world[i];
+  }
+
+  // Backward pass: project each subtree's articulated inertia through its joint.
+  for (int i = n - 1; i >= 1; --i) {
+    const Joint& joint = model.joints[i];
+    Matrix6& IA = data.articulated_inertia_world[i];
+    Force& pA = data.articulated_bias_world[i];
+    const Motion& c = data.bias_acceleration_world[i];
+    if (joint.nv == 1) {
+      const Vector6 S = data.motion_subspace_world.col(joint.v_index);
+      const Vector6 U = IA * S;
+      const double D_inverse = 1.0 / S.dot(U);
+      const double u = tau[joint.v_index] - S.dot(pA.vector());
+      data.aba_U.col(joint.v_index) = U;
+      data.aba_D_inverse[i](0, 0) = D_inverse;
+      data.aba_u[joint.v_index] = u;
+      if (joint.parent > 0) {
+        const Matrix6 Ia = IA - D_inverse * U * U.transpose();
+        data.articulated_bias_world[joint.parent].vector() += pA.vector() + Ia * c.vector() + (D_inverse * u) * U;
+        data.articulated_inertia_world[joint.parent] += Ia;
+      }
+    } else if (joint.nv > 1) {
+      const auto S = data.motion_subspace_world.middleCols(joint.v_index, joint.nv);
+      auto U = data.aba_U.middleCols(joint.v_index, joint.nv);
+      U.noalias() = IA * S;
+      const SmallMatrix D = S.transpose() * U;
+      data.aba_D_inverse[i] = D.llt().solve(SmallMatrix::Identity(joint.nv, joint.nv));
+      auto u = data.aba_u.segment(joint.v_index, joint.nv);
+      u.noalias() = tau.segment(joint.v_index, joint.nv) - S.transpose() * pA.vector();
+      if (joint.parent > 0) {
+        const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> UD = U * data.aba_D_inverse[i];
+        const Matrix6 Ia = IA - UD * U.transpose();
+        data.articulated_bias_world[joint.parent].vector() += pA.vector() + Ia * c.vector() + UD * u;
+        data.articulated_inertia_world[joint.parent] += Ia;
+      }
+    } else if (joint.parent > 0) {
+      data.articulated_bias_world[joint.parent].vector() += pA.vector() + IA * c.vector();
+      data.articulated_inertia_world[joint.parent] += IA;
+    }
+  }
+
+  // Forward pass: accelerations from the root outwards.
+  for (int i = 1; i < n; ++i) {
+    const Joint& joint = model.joints[i];
+    Motion a = data.acceleration_world[joint.parent] + data.bias_acceleration_world[i];
+    if (joint.nv == 1) {
+      const double qdd = data.aba_D_inverse[i](0, 0) *
+                         (data.aba_u[joint.v_index] - data.aba_U.col(joint.v_index).dot(a.vector()));
+      data.qdd[joint.v_index] = qdd;
+      a.vector() += qdd * data.motion_subspace_world.col(joint.v_index);
+    } else if (joint.nv > 1) {
+      auto qdd = data.qdd.segment(joint.v_index, joint.nv);
+      qdd.noalias() = data.aba_D_inverse[i] * (data.aba_u.segment(joint.v_index, joint.nv) -
+                                                data.aba_U.middleCols(joint.v_index, joint.nv).transpose() * a.vector());
+      a.vector().noalias() += data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd;
+    }
+    data.acceleration_world[i] = a;
+  }
+  return data.qdd;
+}
+
+const VectorX& aba(const Model& model, Data& data, const VectorX& q, const VectorX& v, const VectorX& tau,
+                   ExternalForces external_forces_world) {
+  update_positions(model, data, q);
+  update_velocities(model, data, q, v);
+  return articulated_body_forward_dynamics(model, data, tau, external_forces_world);
+}
+
+}  // namespace heavesim

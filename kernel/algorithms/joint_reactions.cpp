@@ -1,0 +1,20 @@
+#include "kernel/algorithms/joint_reactions.hpp"
+
+namespace heavesim {
+
+void compute_joint_wrenches(const Model& model, Data& data, ExternalForces external_forces_world) {
+  inverse_dynamics(model, data, data.qdd, external_forces_world);
+}
+
+JointReaction joint_reaction(const Data& data, int joint_index) {
+  const Transform& X_world_joint = data.X_world_link[joint_index];
+  const Force& f = data.joint_wrench_world[joint_index];
+  JointReaction reaction;
+  reaction.force_world = f.linear();
+  reaction.moment_world = f.moment_about(X_world_joint.translation());
+  reaction.force_joint = X_world_joint.rotation().transpose() * reaction.force_world;
+  reaction.moment_joint = X_world_joint.rotation().transpose() * reaction.moment_world;
+  return reaction;
+}
+
+}  // namespace heavesim

@@ -1,0 +1,91 @@
+#include "kernel/integrators/erk_integrator.hpp"
+
+#include <arkode/arkode_erkstep.h>
+
+#include <string>
+
+namespace heavesim {
+
+ErkIntegrator::~ErkIntegrator() { release(); }
+
+void ErkIntegrator::release() {
+  if (arkode_) ERKStepFree(&arkode_);
+  if (y_nv_) N_VDestroy(y_nv_);
+  arkode_ = nullptr;
+  y_nv_ = nullptr;
+}
+
+int ErkIntegrator::rhs(double t, N_Vector y, N_Vector ydot, void* user_data) {
+  auto* self = static_cast<ErkIntegrator*>(user_data);
+  try {
+    self->work_y_ = sundials::map(y);
+    self->system_->derivative(t, self->work_y_, self->work_f_);
+    sundials::map(ydot) = self->work_f_;
+    return 0;
+  } catch (...) {
+    self->callback_error_.exception = std::current_exception();
+    return -1;
+  }
+}
+
+int ErkIntegrator::project_step(double t, N_Vector y, void* user_data) {
+  auto* self = static_cast<ErkIntegrator*>(user_data);
+  try {
+    self->work_y_ = sundials::map(y);
+    self->system_->project(t, self->work_y_);
+    sundials::map(y) = self->work_y_;
+    return 0;
+  } catch (...) {
+    self->callback_error_.exception = std::current_exception();
+    return -1;
+  }
+}
+
+void ErkIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
+  release();
+  system_ = &system;
+  t_ = t0;
+  y_ = y0;
+  const int n = system.size();
+  work_y_.resize(n);
+  work_f_.resize(n);
+  y_nv_ = N_VNew_Serial(n, context_);
+  sundials::map(y_nv_) = y0;
+  arkode_ = ERKStepCreate(&ErkIntegrator::rhs, t0, y_nv_, context_);
+  ERKStepSetUserData(arkode_, this);
+  ERKStepSetTableNum(arkode_, table_);
+  ERKStepSStolerances(arkode_, settings_.relative_tolerance, settings_.absolute_tolerance);
+  ERKStepSetMaxNumSteps(arkode_, settings_.max_steps_per_output);
+  if (settings_.max_step > 0.0) ERKStepSetMaxStep(arkode_, settings_.max_step);
+  ERKStepSetPostprocessStepFn(arkode_, &ErkIntegrator::project_step);
+}
+
+void ErkIntegrator::advance_to(double t_out) {
+  if (t_out <= t_) return;
+  double t_reached = t_;
+  const int flag = ERKStepEvolve(arkode_, t_out, y_nv_, &t_reached, ARK_NORMAL);
+  if (flag < 0) {
+    callback_error_.rethrow_if_set();
+    throw NumericalError(t_reached, std::string("ARKODE ERK failed (") + ERKStepGetReturnFlagName(flag) + ")",
+                         flag == ARK_TOO_MUCH_WORK
+                             ? "too many steps: the problem may be stiff; use solver.integrator: ida"
+                             : "step-size collapse; check force elements and tolerances");
+  }
+  t_ = t_out;
+  y_ = sundials::map(y_nv_);
+  system_->project(t_, y_);
+}
+
+IntegratorStatistics ErkIntegrator::statistics() const {
+  IntegratorStatistics s;
+  if (!arkode_) return s;
+  long attempts = 0;
+  ERKStepGetNumSteps(arkode_, &s.steps);
+  ERKStepGetNumRhsEvals(arkode_, &s.rhs_evaluations);
+  ERKStepGetNumErrTestFails(arkode_, &s.error_test_failures);
+  ERKStepGetNumStepAttempts(arkode_, &attempts);
+  ERKStepGetLastStep(arkode_, &s.last_step);
+  return s;
+}
+
+}  // namespace heavesim

@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdio>  // arkode_butcher.h uses FILE without including it
+
+#include <arkode/arkode_butcher_erk.h>
+#include <nvector/nvector_serial.h>
+
+#include "kernel/integrators/integrator.hpp"
+#include "kernel/integrators/sundials_support.hpp"
+
+namespace heavesim {
+
+/// Adaptive explicit Runge-Kutta from SUNDIALS ARKODE (ERKStep) with an embedded
+/// error estimate; the state is projected (quaternions renormalized) after each step.
+class ErkIntegrator : public Integrator {
+ public:
+  ErkIntegrator(const IntegratorSettings& settings, ARKODE_ERKTableID table) : settings_(settings), table_(table) {}
+  ~ErkIntegrator() override;
+  void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
+  void advance_to(double t_out) override;
+  const VectorX& state() const override { return y_; }
+  double time() const override { return t_; }
+  IntegratorStatistics statistics() const override;
+
+ private:
+  static int rhs(double t, N_Vector y, N_Vector ydot, void* user_data);
+  static int project_step(double t, N_Vector y, void* user_data);
+  void release();
+
+  IntegratorSettings settings_;
+  ARKODE_ERKTableID table_;
+  OdeSystem* system_ = nullptr;
+  sundials::Context context_;
+  sundials::CallbackError callback_error_;
+  void* arkode_ = nullptr;
+  N_Vector y_nv_ = nullptr;
+  VectorX y_, work_y_, work_f_;
+  double t_ = 0.0;
+};
+
+}  // namespace heavesim

@@ -1,0 +1,52 @@
+#pragma once
+// Time integrators behind one small interface: initialize at (t0, y0), then advance
+// to each output time. The caller owns the system.
+#include <memory>
+#include <string>
+
+#include "kernel/system/ode_system.hpp"
+
+namespace heavesim {
+
+enum class IntegrationMethod {
+  rk4,        // classical Runge-Kutta, fixed step, projection after every step
+  dopri5,     // ARKODE ERK Dormand-Prince 5(4), adaptive, projection after every step
+  verner6,    // ARKODE ERK Verner 6(5), adaptive (tight-tolerance references)
+  fehlberg8,  // ARKODE ERK Fehlberg 8(7), adaptive (very tight tolerances)
+  ida         // SUNDIALS IDA, variable-order BDF (stiff problems), dense direct solver
+};
+
+struct IntegratorSettings {
+  IntegrationMethod method = IntegrationMethod::ida;
+  double step = 1e-3;             // s, fixed step (rk4)
+  double relative_tolerance = 1e-8;
+  double absolute_tolerance = 1e-10;
+  double max_step = 0.0;          // s, 0 = unlimited (adaptive methods)
+  long max_steps_per_output = 100000;
+};
+
+struct IntegratorStatistics {
+  long steps = 0;
+  long rhs_evaluations = 0;          // f(t, y) or residual evaluations
+  long jacobian_evaluations = 0;
+  long error_test_failures = 0;
+  long nonlinear_iterations = 0;
+  long convergence_failures = 0;
+  double last_step = 0.0;            // s
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  virtual void initialize(OdeSystem& system, double t0, const VectorX& y0) = 0;
+  /// Advances the solution to exactly t_out; throws NumericalError on failure.
+  virtual void advance_to(double t_out) = 0;
+  virtual const VectorX& state() const = 0;
+  virtual double time() const = 0;
+  virtual IntegratorStatistics statistics() const = 0;
+};
+
+std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
+std::string integration_method_name(IntegrationMethod method);
+
+}  // namespace heavesim

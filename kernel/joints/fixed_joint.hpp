@@ -1,0 +1,23 @@
+#pragma once
+#include "kernel/joints/joint_common.hpp"
+
+namespace heavesim {
+
+/// Rigid connection (0 DoF). Kept as its own link so that its reaction (e.g. the hook
+/// load between top drive and drill string) can be reported.
+struct FixedJoint {
+  static constexpr int nq = 0, nv = 0;
+  static constexpr const char* type_name = "fixed";
+  static constexpr bool has_bias_acceleration = false;
+
+  Transform transform(const double*) const { return Transform::Identity(); }
+  MotionSubspace<0> motion_subspace(const double*) const { return MotionSubspace<0>(); }
+  Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
+  void configuration_derivative(const double*, const double*, double*) const {}
+  void integrate(const double*, const double*, double, double*) const {}
+  void difference(const double*, const double*, double*) const {}
+  void neutral(double*) const {}
+  void normalize(double*) const {}
+};
+
+}  // namespace heavesim

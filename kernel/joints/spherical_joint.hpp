@@ -1,0 +1,50 @@
+#pragma once
+#include "kernel/joints/joint_common.hpp"
+
+namespace heavesim {
+
+/// Ball joint. q = unit quaternion (w, x, y, z) of the child-side frame in the
+/// parent-side frame; v = angular velocity [rad/s] in child-side coordinates.
+/// S = [1; 0], c_J = 0 (Pinocchio's local convention).
+struct SphericalJoint {
+  static constexpr int nq = 4, nv = 3;
+  static constexpr const char* type_name = "spherical";
+  static constexpr bool has_bias_acceleration = false;
+
+  Transform transform(const double* q) const {
+    return Transform::from_rotation(
+        quaternion_from_wxyz(map4(q)).toRotationMatrix());
+  }
+  MotionSubspace<3> motion_subspace(const double*) const {
+    MotionSubspace<3> S;
+    S << Matrix3::Identity(), Matrix3::Zero();
+    return S;
+  }
+  Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
+  void configuration_derivative(const double* q, const double* v, double* qdot) const {
+    quaternion_derivative(map4(q), map3(v),
+                          map4(qdot));
+  }
+  /// q_out = q (x) exp(v dt / 2): exact for constant body-frame angular velocity.
+  void integrate(const double* q, const double* v, double dt, double* q_out) const {
+    const Eigen::Quaterniond q0 = quaternion_from_wxyz(map4(q));
+    const Vector3 rotation = map3(v) * dt;
+    const double angle = rotation.norm();
+    const Eigen::Quaterniond dq =
+        angle > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, rotation / angle))
+                    : Eigen::Quaterniond::Identity();
+    write_wxyz((q0 * dq).normalized(), map4(q_out));
+  }
+  void difference(const double* q0, const double* q1, double* dv) const {
+    const Eigen::Quaterniond a = quaternion_from_wxyz(map4(q0));
+    const Eigen::Quaterniond b = quaternion_from_wxyz(map4(q1));
+    map3(dv) = rotation_vector(a.conjugate() * b);
+  }
+  void neutral(double* q) const {
+    q[0] = 1.0;
+    q[1] = q[2] = q[3] = 0.0;
+  }
+  void normalize(double* q) const { map4(q).normalize(); }
+};
+
+}  // namespace heavesim

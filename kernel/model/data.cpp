@@ -1,0 +1,30 @@
+#include "kernel/model/data.hpp"
+
+namespace heavesim {
+
+Data::Data(const Model& model) {
+  const int n = model.num_links();
+  X_parent_link.assign(n, Transform::Identity());
+  X_world_link.assign(n, Transform::Identity());
+  motion_subspace_world = Matrix6X::Zero(6, model.nv);
+  inertia_world.assign(n, Matrix6::Zero());
+  gravity_force_world.assign(n, Force::Zero());
+  velocity_world.assign(n, Motion::Zero());
+  bias_acceleration_world.assign(n, Motion::Zero());
+  bias_force_world.assign(n, Force::Zero());
+  qdd = VectorX::Zero(model.nv);
+  acceleration_world.assign(n, Motion::Zero());
+  joint_wrench_world.assign(n, Force::Zero());
+  tau = VectorX::Zero(model.nv);
+  composite_inertia_world.assign(n, Matrix6::Zero());
+  mass_matrix = MatrixX::Zero(model.nv, model.nv);
+  mass_matrix_cholesky = Eigen::LLT<MatrixX>(model.nv);
+  articulated_inertia_world.assign(n, Matrix6::Zero());
+  articulated_bias_world.assign(n, Force::Zero());
+  aba_U = Matrix6X::Zero(6, model.nv);
+  aba_D_inverse.resize(n);
+  for (int i = 1; i < n; ++i) aba_D_inverse[i] = SmallMatrix::Zero(model.joints[i].nv, model.joints[i].nv);
+  aba_u = VectorX::Zero(model.nv);
+}
+
+}  // namespace heavesim

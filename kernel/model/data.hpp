@@ -1,0 +1,51 @@
+#pragma once
+// Workspace of the algorithms for one Model (Pinocchio's Data): every buffer is sized
+// once here, so no algorithm allocates. One Model can serve many Data.
+//
+// All spatial quantities are in world coordinates about the world origin
+// ("absolute" spatial vectors, Featherstone 2008 sec. 2.8 / Pinocchio's WORLD
+// convention): composite and articulated inertias then add without transforms.
+#include <Eigen/Cholesky>
+
+#include "kernel/model/model.hpp"
+
+namespace heavesim {
+
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+
+struct Data {
+  explicit Data(const Model& model);
+
+  // --- position stage (update_positions) ---
+  AlignedVector<Transform> X_parent_link;   // link frame in its parent link frame
+  AlignedVector<Transform> X_world_link;    // link frame in the world
+  Matrix6X motion_subspace_world;           // 6 x nv: column k = spatial motion per unit v_k
+  AlignedVector<Matrix6> inertia_world;     // total spatial inertia (rigid + added) per link
+  AlignedVector<Force> gravity_force_world; // weight m g at the link CoM
+
+  // --- velocity stage (update_velocities) ---
+  AlignedVector<Motion> velocity_world;           // spatial velocity v_i of each link
+  AlignedVector<Motion> bias_acceleration_world;  // c_i = dS_i/dt v_i (velocity-product term)
+  AlignedVector<Force> bias_force_world;          // v_i x* (I_i v_i)
+
+  // --- acceleration stage ---
+  VectorX qdd;                                    // nv, joint accelerations
+  AlignedVector<Motion> acceleration_world;       // spatial acceleration a_i of each link
+  AlignedVector<Force> joint_wrench_world;        // f_i: total wrench of parent on child through joint i
+  VectorX tau;                                    // nv, generalized forces from inverse dynamics
+
+  // --- mass matrix (CRBA) ---
+  AlignedVector<Matrix6> composite_inertia_world;
+  MatrixX mass_matrix;                            // nv x nv, both triangles filled
+  Eigen::LLT<MatrixX> mass_matrix_cholesky;
+
+  // --- articulated-body workspace (ABA) ---
+  AlignedVector<Matrix6> articulated_inertia_world;
+  AlignedVector<Force> articulated_bias_world;
+  Matrix6X aba_U;                                 // 6 x nv: U_i = I^A_i S_i
+  std::vector<SmallMatrix> aba_D_inverse;         // per link, nv_i x nv_i
+  VectorX aba_u;                                  // nv: u_i = tau_i - S_i^T p^A_i
+};
+
+}  // namespace heavesim

@@ -1,0 +1,156 @@
+#include "kernel/model/model_builder.hpp"
+
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+
+namespace heavesim {
+namespace {
+
+std::string format_number(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+ModelError body_error(const std::string& body, const std::string& field, const std::string& found,
+                      const std::string& expected) {
+  return ModelError(ModelError::ItemKind::body, body, field, found, expected);
+}
+
+ModelError joint_error(const std::string& joint, const std::string& field, const std::string& found,
+                       const std::string& expected) {
+  return ModelError(ModelError::ItemKind::joint, joint, field, found, expected);
+}
+
+void check_body(const BodyDefinition& body) {
+  const Inertia& I = body.inertia;
+  if (!(I.mass() > 0.0) || !std::isfinite(I.mass()))
+    throw body_error(body.name, "mass", format_number(I.mass()), "a positive, finite mass in kg");
+  const Matrix3& J = I.inertia_com();
+  if (!J.allFinite()) throw body_error(body.name, "inertia", "non-finite entries", "finite numbers (kg m^2)");
+  const Vector3 principal = Eigen::SelfAdjointEigenSolver<Matrix3>(J).eigenvalues();
+  const double scale = std::max(principal.cwiseAbs().maxCoeff(), 1e-300);
+  if (principal.minCoeff() < -1e-12 * scale)
+    throw body_error(body.name, "inertia",
+                     "principal moments " + format_number(principal[0]) + ", " + format_number(principal[1]) + ", " +
+                         format_number(principal[2]),
+                     "a positive semi-definite inertia about the CoM");
+  // Triangle inequality of principal moments: any real mass distribution satisfies it.
+  const double a = principal[0], b = principal[1], c = principal[2];
+  if (a + b < c * (1.0 - 1e-9) || a + c < b * (1.0 - 1e-9) || b + c < a * (1.0 - 1e-9))
+    throw body_error(body.name, "inertia",
+                     "principal moments " + format_number(a) + ", " + format_number(b) + ", " + format_number(c),
+                     "moments satisfying the triangle inequality (each <= the sum of the other two)");
+}
+
+}  // namespace
+
+Model ModelBuilder::build() const {
+  std::map<std::string, int> body_index;
+  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
+    const BodyDefinition& body = bodies_[b];
+    if (body.name == ground_name) throw body_error(body.name, "name", "'ground'", "a name other than 'ground'");
+    if (!body_index.emplace(body.name, b).second)
+      throw body_error(body.name, "name", "'" + body.name + "' twice", "unique body names");
+    check_body(body);
+  }
+
+  std::map<std::string, int> joint_of_child;
+  std::map<std::string, std::vector<int>> joints_of_parent;
+  std::map<std::string, int> joint_names;
+  for (int j = 0; j < static_cast<int>(joints_.size()); ++j) {
+    const JointDefinition& joint = joints_[j];
+    if (!joint_names.emplace(joint.name, j).second)
+      throw joint_error(joint.name, "name", "'" + joint.name + "' twice", "unique joint names");
+    if (joint.parent != ground_name && !body_index.count(joint.parent))
+      throw joint_error(joint.name, "parent", "'" + joint.parent + "', which is not a body",
+                        "'ground' or the name of a body");
+    if (!body_index.count(joint.child))
+      throw joint_error(joint.name, "child", "'" + joint.child + "', which is not a body", "the name of a body");
+    if (joint.parent == joint.child)
+      throw joint_error(joint.name, "child", "the parent body '" + joint.parent + "' again",
+                        "a child different from the parent");
+    if (!joint_of_child.emplace(joint.child, j).second)
+      throw joint_error(joint.name, "child",
+                        "body '" + joint.child + "', already the child of joint '" +
+                            joints_[joint_of_child[joint.child]].name + "'",
+                        "each body the child of one joint (close kinematic loops with a loop joint)");
+    joints_of_parent[joint.parent].push_back(j);
+  }
+  for (const BodyDefinition& body : bodies_)
+    if (!joint_of_child.count(body.name))
+      throw body_error(body.name, "name", "a body that no joint attaches",
+                       "a joint with child '" + body.name + "' (use a free joint for a floating body)");
+
+  Model model;
+  model.gravity = gravity_;
+  Link ground;
+  ground.name = ground_name;
+  model.links.push_back(ground);
+  model.joints.push_back(Joint{});
+  model.joints[0].name = ground_name;
+
+  // Depth-first order from the ground; bodies never reached sit on a cycle.
+  std::function<void(const std::string&, int)> visit = [&](const std::string& parent_body, int parent_link) {
+    auto it = joints_of_parent.find(parent_body);
+    if (it == joints_of_parent.end()) return;
+    for (int j : it->second) {
+      const JointDefinition& def = joints_[j];
+      const BodyDefinition& body = bodies_[body_index.at(def.child)];
+      const int link_id = model.num_links();
+      Joint joint;
+      joint.name = def.name;
+      joint.type = def.type;
+      joint.parent = parent_link;
+      joint.placement = def.X_parent_joint;
+      joint.nq = joint_nq(def.type);
+      joint.nv = joint_nv(def.type);
+      joint.q_index = model.nq;
+      joint.v_index = model.nv;
+      joint.spring = def.spring;
+      joint.limits = def.limits;
+      model.nq += joint.nq;
+      model.nv += joint.nv;
+      if (joint.spring && (joint.spring->stiffness.size() != joint.nv || joint.spring->damping.size() != joint.nv ||
+                           joint.spring->rest.size() != joint.nq))
+        throw joint_error(def.name, "spring", "data sizes that do not match the joint",
+                          std::to_string(joint.nv) + " stiffness/damping and " + std::to_string(joint.nq) +
+                              " rest values");
+      if (joint.limits && joint.nv != 1)
+        throw joint_error(def.name, "limits", "limits on a " + std::to_string(joint.nv) + "-DoF joint",
+                          "limits on 1-DoF joints only");
+
+      Link link;
+      link.name = body.name;
+      // Link frame = child-side joint frame, so body data move by X_link_body = X_child_joint^-1.
+      link.X_link_body = def.X_child_joint.inverse();
+      link.inertia = body.inertia.transformed(link.X_link_body);
+      if (body.added_inertia) link.added_inertia = transform_spatial_inertia(link.X_link_body, *body.added_inertia);
+      model.links.push_back(link);
+      model.joints.push_back(joint);
+      model.links[parent_link].children.push_back(link_id);
+      visit(body.name, link_id);
+    }
+  };
+  visit(ground_name, 0);
+
+  if (model.num_links() != static_cast<int>(bodies_.size()) + 1) {
+    for (const BodyDefinition& body : bodies_)
+      if (model.link_index(body.name) < 0) {
+        const JointDefinition& joint = joints_[joint_of_child.at(body.name)];
+        throw joint_error(joint.name, "parent", "a chain of joints that leads back to '" + body.name + "' (a cycle)",
+                          "a tree rooted at ground (close kinematic loops with a loop joint)");
+      }
+  }
+  for (int i = model.num_links() - 1; i >= 0; --i) {
+    model.links[i].subtree_end = i + 1;
+    for (int c : model.links[i].children)
+      model.links[i].subtree_end = std::max(model.links[i].subtree_end, model.links[c].subtree_end);
+  }
+  return model;
+}
+
+}  // namespace heavesim

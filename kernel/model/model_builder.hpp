@@ -1,0 +1,69 @@
+#pragma once
+// Builds a Model from bodies and joints given in any order, by name.
+#include <stdexcept>
+
+#include "kernel/model/model.hpp"
+
+namespace heavesim {
+
+/// A structural or physical problem in the model definition. `item` names the
+/// offending body or joint and `field` the offending datum (e.g. "mass", "parent"),
+/// so that callers can point at the exact place in their input.
+class ModelError : public std::runtime_error {
+ public:
+  enum class ItemKind { body, joint };
+  ModelError(ItemKind kind, std::string item, std::string field, std::string found, std::string expected)
+      : std::runtime_error((kind == ItemKind::body ? "body '" : "joint '") + item + "', " + field + ": found " +
+                           found + "; expected " + expected),
+        kind_(kind),
+        item_(std::move(item)),
+        field_(std::move(field)),
+        found_(std::move(found)),
+        expected_(std::move(expected)) {}
+  ItemKind kind() const { return kind_; }
+  const std::string& item() const { return item_; }
+  const std::string& field() const { return field_; }
+  const std::string& found() const { return found_; }
+  const std::string& expected() const { return expected_; }
+
+ private:
+  ItemKind kind_;
+  std::string item_, field_, found_, expected_;
+};
+
+struct BodyDefinition {
+  std::string name;
+  Inertia inertia;                       // about the body frame origin, body axes
+  std::optional<Matrix6> added_inertia;  // about the body frame origin, body axes, [angular; linear]
+};
+
+struct JointDefinition {
+  std::string name;
+  JointType type;
+  std::string parent;                    // body name or "ground"
+  std::string child;                     // body name
+  Transform X_parent_joint;              // joint frame in the parent body frame
+  Transform X_child_joint;               // joint frame in the child body frame
+  std::optional<JointSpringDamper> spring;
+  std::optional<JointLimits> limits;
+};
+
+class ModelBuilder {
+ public:
+  static constexpr const char* ground_name = "ground";
+
+  void set_gravity(const Vector3& gravity_world) { gravity_ = gravity_world; }
+  void add_body(BodyDefinition body) { bodies_.push_back(std::move(body)); }
+  void add_joint(JointDefinition joint) { joints_.push_back(std::move(joint)); }
+
+  /// Checks the topology (each body the child of exactly one joint, no cycle, all
+  /// connected to ground) and the physical data; throws ModelError.
+  Model build() const;
+
+ private:
+  Vector3 gravity_ = Vector3(0.0, 0.0, -9.81);
+  std::vector<BodyDefinition> bodies_;
+  std::vector<JointDefinition> joints_;
+};
+
+}  // namespace heavesim

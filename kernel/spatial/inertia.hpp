@@ -1,0 +1,89 @@
+#pragma once
+// Rigid-body spatial inertia and general 6x6 spatial inertia operations.
+#include "kernel/spatial/transform.hpp"
+
+namespace heavesim {
+
+/// Rigid-body inertia expressed in some frame F:
+///   mass            m      [kg]
+///   com             c_F    [m]      centre of mass, F coordinates
+///   inertia_com     I_c    [kg m^2] rotational inertia about the CoM, F axes
+/// As a 6x6 operator on [omega; v] (Featherstone eq. 2.63):
+///   [ I_c + m [c]x[c]x^T   m [c]x ]
+///   [ m [c]x^T             m 1    ]
+class Inertia {
+ public:
+  Inertia() : mass_(0.0), com_(Vector3::Zero()), inertia_com_(Matrix3::Zero()) {}
+  Inertia(double mass, const Vector3& com, const Matrix3& inertia_com)
+      : mass_(mass), com_(com), inertia_com_(inertia_com) {}
+
+  double mass() const { return mass_; }
+  const Vector3& com() const { return com_; }
+  const Matrix3& inertia_com() const { return inertia_com_; }
+
+  /// Momentum h = I v: linear m (v - c x w), angular I_c w + c x linear.
+  Force operator*(const Motion& m) const {
+    const Vector3 linear = mass_ * (m.linear() - com_.cross(m.angular()));
+    return Force(inertia_com_ * m.angular() + com_.cross(linear), linear);
+  }
+
+  Matrix6 matrix() const {
+    Matrix6 I;
+    const Matrix3 C = skew(com_);
+    I.topLeftCorner<3, 3>() = inertia_com_ - mass_ * C * C;
+    I.topRightCorner<3, 3>() = mass_ * C;
+    I.bottomLeftCorner<3, 3>() = -mass_ * C;
+    I.bottomRightCorner<3, 3>() = mass_ * Matrix3::Identity();
+    return I;
+  }
+
+  /// This inertia given in frame B, re-expressed in frame A (X = X_A_B).
+  Inertia transformed(const Transform& X_A_B) const {
+    const Matrix3& R = X_A_B.rotation();
+    return Inertia(mass_, X_A_B.act_point(com_), R * inertia_com_ * R.transpose());
+  }
+
+  /// Combined inertia of two bodies expressed in the same frame.
+  Inertia operator+(const Inertia& other) const {
+    const double m = mass_ + other.mass_;
+    if (m <= 0.0) return Inertia();
+    const Vector3 c = (mass_ * com_ + other.mass_ * other.com_) / m;
+    const Vector3 d1 = com_ - c, d2 = other.com_ - c;
+    const Matrix3 shift1 = mass_ * (d1.squaredNorm() * Matrix3::Identity() - d1 * d1.transpose());
+    const Matrix3 shift2 = other.mass_ * (d2.squaredNorm() * Matrix3::Identity() - d2 * d2.transpose());
+    return Inertia(m, c, inertia_com_ + shift1 + other.inertia_com_ + shift2);
+  }
+
+  /// Kinetic energy 1/2 v^T I v [J] of a body moving with spatial velocity v.
+  double kinetic_energy(const Motion& v) const { return 0.5 * dot(v, (*this) * v); }
+
+ private:
+  double mass_;
+  Vector3 com_;
+  Matrix3 inertia_com_;
+};
+
+/// A general symmetric 6x6 spatial inertia (articulated, composite, or including
+/// hydrodynamic added mass) given in frame B, re-expressed in frame A:
+///   I_A = X_A_B^* I_B X_A_B^{-1}.
+/// With blocks [A B; B^T C] rotated into A axes and then shifted by P = [p]x:
+///   C_A = C', B_A = B' + P C', A_A = A' - B'P + P B'^T - P C' P.
+inline Matrix6 transform_spatial_inertia(const Transform& X_A_B, const Matrix6& I_B) {
+  const Matrix3& R = X_A_B.rotation();
+  const Matrix3 P = skew(X_A_B.translation());
+  const Matrix3 A = R * I_B.topLeftCorner<3, 3>() * R.transpose();
+  const Matrix3 B = R * I_B.topRightCorner<3, 3>() * R.transpose();
+  const Matrix3 C = R * I_B.bottomRightCorner<3, 3>() * R.transpose();
+  const Matrix3 PC = P * C;
+  Matrix6 I_A;
+  I_A.bottomRightCorner<3, 3>() = C;
+  I_A.topRightCorner<3, 3>() = B + PC;
+  I_A.bottomLeftCorner<3, 3>() = (B + PC).transpose();
+  I_A.topLeftCorner<3, 3>() = A - B * P + P * B.transpose() - PC * P;
+  return I_A;
+}
+
+/// I v for a general 6x6 spatial inertia.
+inline Force operator*(const Matrix6& I, const Motion& v) { return Force(Vector6(I * v.vector())); }
+
+}  // namespace heavesim

@@ -1,0 +1,47 @@
+#pragma once
+// The plug-in point for everything outside the kernel that pushes on bodies:
+// hydrostatics, radiation, waves, mooring, pneumatic and hydraulic compensators,
+// controllers. The kernel knows only this interface.
+#include <string>
+
+#include "kernel/model/data.hpp"
+
+namespace heavesim {
+
+/// Loads applied to the multibody system during one evaluation.
+struct AppliedForces {
+  explicit AppliedForces(const Model& model)
+      : external_force_world(model.num_links(), Force::Zero()), joint_force(VectorX::Zero(model.nv)) {}
+  void clear() {
+    for (Force& f : external_force_world) f = Force::Zero();
+    joint_force.setZero();
+  }
+  /// Adds a force f [N] acting at point p [m] (both world frame) on link i.
+  void add_force_at_point(int link, const Vector3& point_world, const Vector3& force_world) {
+    external_force_world[link] += Force::at_point(point_world, force_world);
+  }
+
+  AlignedVector<Force> external_force_world;  // per link, world coordinates about the world origin
+  VectorX joint_force;                        // nv, generalized forces along joint coordinates
+};
+
+/// A force element may own internal states z with dz/dt = g(t, q, v, z)
+/// (radiation memory, gas temperature, chamber pressures, controller integrators).
+/// apply() and state_derivative() see the position and velocity stages in Data.
+class ForceElement {
+ public:
+  virtual ~ForceElement() = default;
+  virtual const std::string& name() const = 0;
+
+  virtual int state_size() const { return 0; }
+  virtual void initial_state(Eigen::Ref<VectorX> /*z*/) const {}
+
+  /// Adds this element's loads at time t [s] for internal state z.
+  virtual void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
+                     AppliedForces& forces) const = 0;
+
+  virtual void state_derivative(double /*t*/, const Model& /*model*/, const Data& /*data*/,
+                                Eigen::Ref<const VectorX> /*z*/, Eigen::Ref<VectorX> /*zdot*/) const {}
+};
+
+}  // namespace heavesim

@@ -1,0 +1,94 @@
+#include "validation/checks/random_models.hpp"
+
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/model/model_builder.hpp"
+
+namespace heavesim::validation {
+namespace {
+
+double uniform(std::mt19937_64& random, double low, double high) {
+  return std::uniform_real_distribution<double>(low, high)(random);
+}
+
+Vector3 random_vector(std::mt19937_64& random, double scale) {
+  return Vector3(uniform(random, -scale, scale), uniform(random, -scale, scale), uniform(random, -scale, scale));
+}
+
+Matrix3 random_rotation(std::mt19937_64& random) {
+  Eigen::Quaterniond q(uniform(random, -1, 1), uniform(random, -1, 1), uniform(random, -1, 1), uniform(random, -1, 1));
+  return q.normalized().toRotationMatrix();
+}
+
+Vector3 random_unit(std::mt19937_64& random) { return random_vector(random, 1.0).normalized(); }
+
+}  // namespace
+
+Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options) {
+  ModelBuilder builder;
+  builder.set_gravity(Vector3(0.3, -0.2, -9.81));
+  for (int b = 0; b < options.bodies; ++b) {
+    const std::string name = "body" + std::to_string(b);
+    // Principal moments in [0.5, 1] always satisfy the triangle inequality.
+    const Matrix3 R = random_rotation(random);
+    const Matrix3 inertia =
+        R * Vector3(uniform(random, 0.5, 1.0), uniform(random, 0.5, 1.0), uniform(random, 0.5, 1.0)).asDiagonal() *
+        R.transpose();
+    BodyDefinition body{name, Inertia(uniform(random, 0.5, 3.0), random_vector(random, 0.5), inertia), std::nullopt};
+    if (options.added_inertia && b % 3 == 1) {
+      const Matrix6 B = Matrix6::Random();
+      body.added_inertia = B * B.transpose() + 0.1 * Matrix6::Identity();
+    }
+    builder.add_body(body);
+
+    JointDefinition joint;
+    joint.name = "joint" + std::to_string(b);
+    joint.child = name;
+    const int parent = options.chain ? b - 1 : std::uniform_int_distribution<int>(-1, b - 1)(random);
+    joint.parent = parent < 0 ? "ground" : "body" + std::to_string(parent);
+    joint.X_parent_joint = Transform(random_rotation(random), random_vector(random, 1.0));
+    joint.X_child_joint = Transform(random_rotation(random), random_vector(random, 0.3));
+    const int kind = options.only_revolute ? 1 : b % 7;
+    switch (kind) {
+      case 0: joint.type = FixedJoint{}; break;
+      case 1: joint.type = RevoluteJoint{random_unit(random)}; break;
+      case 2: joint.type = PrismaticJoint{random_unit(random)}; break;
+      case 3: joint.type = CylindricalJoint{random_unit(random)}; break;
+      case 4: {
+        const Vector3 a1 = random_unit(random);
+        joint.type = UniversalJoint{a1, a1.unitOrthogonal()};
+        break;
+      }
+      case 5: joint.type = SphericalJoint{}; break;
+      default: joint.type = FreeJoint{}; break;
+    }
+    if (options.joint_springs && joint_has_scalar_coordinates(joint.type) && joint_nv(joint.type) > 0) {
+      const int nv = joint_nv(joint.type);
+      joint.spring = JointSpringDamper{JointVector::Constant(nv, uniform(random, 1.0, 10.0)),
+                                       JointVector::Constant(nv, uniform(random, 0.1, 1.0)),
+                                       JointVector::Constant(nv, uniform(random, -0.5, 0.5))};
+    }
+    builder.add_joint(joint);
+  }
+  return builder.build();
+}
+
+RandomState random_state(const Model& model, std::mt19937_64& random) {
+  RandomState state;
+  const VectorX q0 = model.neutral_configuration();
+  VectorX displacement(model.nv);
+  for (int i = 0; i < model.nv; ++i) displacement[i] = uniform(random, -1.5, 1.5);
+  state.q = q0;
+  integrate_configuration(model, q0, displacement, 1.0, state.q);
+  state.v = VectorX(model.nv);
+  state.tau = VectorX(model.nv);
+  for (int i = 0; i < model.nv; ++i) {
+    state.v[i] = uniform(random, -2.0, 2.0);
+    state.tau[i] = uniform(random, -5.0, 5.0);
+  }
+  state.external_forces.assign(model.num_links(), Force::Zero());
+  for (int i = 1; i < model.num_links(); ++i)
+    state.external_forces[i] = Force(random_vector(random, 3.0), random_vector(random, 10.0));
+  return state;
+}
+
+}  // namespace heavesim::validation

@@ -1,0 +1,46 @@
+#include "validation/checks/validation_suite.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "app/version.hpp"
+
+namespace heavesim::validation {
+
+const std::vector<ValidationCheck>& validation_checks() {
+  static const std::vector<ValidationCheck> checks = {
+      {"K1", "double pendulum vs closed-form Lagrange equations and pin reactions", check_k1_double_pendulum},
+      {"K2", "planar n-link rods (n = 2, 3, 5) vs the n-link oracle", check_k2_planar_chains},
+      {"K3", "2- and 3-link pendulum runs (V1-V4) vs the oracle integrated independently", check_k3_pendulum_runs},
+      {"K5", "free rigid body: momentum and energy conservation, symmetric-top closed form", check_k5_free_body},
+      {"K6", "algorithm cross-checks: CRBA vs RNEA, ABA vs CRBA, reactions vs subtree Newton-Euler",
+       check_k6_algorithm_cross_checks},
+  };
+  return checks;
+}
+
+std::string project_file(const std::string& relative_path) {
+  for (std::filesystem::path directory = std::filesystem::current_path(); !directory.empty();
+       directory = directory.parent_path()) {
+    if (std::filesystem::exists(directory / relative_path)) return (directory / relative_path).string();
+    if (directory == directory.parent_path()) break;
+  }
+  const std::filesystem::path source = std::filesystem::path(heavesim_source_dir) / relative_path;
+  if (std::filesystem::exists(source)) return source.string();
+  throw std::runtime_error("validation file '" + relative_path + "' not found (run from the project directory)");
+}
+
+RunOutcome run_case(const std::string& relative_path, const std::vector<std::string>& overrides,
+                    const std::function<void(double t, const MultibodySystem& system)>& sample) {
+  const CaseDefinition definition = load_case(project_file(relative_path), overrides);
+  Scene scene = build_scene(definition);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  return run_simulation(scene, definition.solver, definition.output.interval, *integrator,
+                        [&](double t, const VectorX& y) {
+                          scene.system->evaluate(t, y, true);
+                          sample(t, *scene.system);
+                          return true;
+                        });
+}
+
+}  // namespace heavesim::validation

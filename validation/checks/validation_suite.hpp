@@ -1,0 +1,46 @@
+#pragma once
+// The validation set (docs/validation.md): each check compares heavesim with something
+// it did not compute itself and reports max error against a stated tolerance.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/run/simulation_run.hpp"
+
+namespace heavesim::validation {
+
+struct ValidationRow {
+  std::string check;     // e.g. "K1"
+  std::string subject;   // e.g. "double pendulum, 1000 random states"
+  std::string quantity;  // e.g. "qdd (ABA), relative"
+  double max_error = 0.0;
+  double tolerance = 0.0;
+  bool passed() const { return max_error <= tolerance; }
+};
+
+struct ValidationCheck {
+  std::string id;
+  std::string title;
+  std::function<std::vector<ValidationRow>()> run;
+};
+
+/// Every check of the suite, in order.
+const std::vector<ValidationCheck>& validation_checks();
+
+/// Absolute path of a file shipped with the project (e.g. "cases/validation/two_link.yaml"),
+/// looked up from the working directory upwards, then in the source tree heavesim was built from.
+std::string project_file(const std::string& relative_path);
+
+/// Loads and runs a case; after each output time the full pipeline (with joint
+/// reactions) has been evaluated and `sample(t, system)` is called.
+RunOutcome run_case(const std::string& relative_path, const std::vector<std::string>& overrides,
+                    const std::function<void(double t, const MultibodySystem& system)>& sample);
+
+// The checks (one file each).
+std::vector<ValidationRow> check_k1_double_pendulum();
+std::vector<ValidationRow> check_k2_planar_chains();
+std::vector<ValidationRow> check_k3_pendulum_runs();
+std::vector<ValidationRow> check_k5_free_body();
+std::vector<ValidationRow> check_k6_algorithm_cross_checks();
+
+}  // namespace heavesim::validation
