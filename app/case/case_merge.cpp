@@ -31,8 +31,9 @@ CaseNode load_with_includes(const std::string& path, std::vector<std::string>& c
                      "includes that form no cycle");
   chain.push_back(canonical);
   CaseNode document = load_yaml_file(path);
-  if (document.is_null()) {
+  if (document.is_null()) {  // an empty file: an empty map at its first line
     document.kind = CaseNode::Kind::map;
+    document.location = SourceLocation{path, 1, 1};
   }
   if (!document.is_map())
     throw InputError(document.location, "", document.describe() + " at the top level",

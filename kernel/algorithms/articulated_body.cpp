@@ -60,9 +60,10 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
       data.qdd[joint.v_index] = qdd;
       a.vector() += qdd * data.motion_subspace_world.col(joint.v_index);
     } else if (joint.nv > 1) {
+      const SmallVector residual = data.aba_u.segment(joint.v_index, joint.nv) -
+                                   data.aba_U.middleCols(joint.v_index, joint.nv).transpose() * a.vector();
       auto qdd = data.qdd.segment(joint.v_index, joint.nv);
-      qdd.noalias() = data.aba_D_inverse[i] * (data.aba_u.segment(joint.v_index, joint.nv) -
-                                                data.aba_U.middleCols(joint.v_index, joint.nv).transpose() * a.vector());
+      qdd.noalias() = data.aba_D_inverse[i] * residual;
       a.vector().noalias() += data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd;
     }
     data.acceleration_world[i] = a;

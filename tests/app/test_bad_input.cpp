@@ -1,0 +1,76 @@
+// Every malformed case in tests/bad_cases is rejected by `heavesim check` with exit
+// code 2 and a message that names the file, the line (marked "# <-- error" in the
+// file), the key path and what was expected ("# expect-path:", "# expect-text:").
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/test_support.hpp"
+
+namespace heavesim {
+namespace {
+
+struct BadCase {
+  std::string path;
+  int line = 0;
+  std::string key_path;
+  std::string text;
+};
+
+BadCase read_expectations(const std::filesystem::path& file) {
+  BadCase bad;
+  bad.path = file.string();
+  std::ifstream in(file);
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (line.rfind("# expect-path:", 0) == 0) bad.key_path = line.size() > 15 ? line.substr(15) : "";
+    if (line.rfind("# expect-text:", 0) == 0) bad.text = line.substr(15);
+    if (line.find("# <-- error") != std::string::npos && bad.line == 0) bad.line = number;
+  }
+  return bad;
+}
+
+std::vector<BadCase> corpus() {
+  std::vector<BadCase> cases;
+  for (const auto& entry : std::filesystem::directory_iterator(testing::source_path("tests/bad_cases")))
+    if (entry.path().extension() == ".yaml") cases.push_back(read_expectations(entry.path()));
+  std::sort(cases.begin(), cases.end(), [](const BadCase& a, const BadCase& b) { return a.path < b.path; });
+  return cases;
+}
+
+TEST(BadInput, CorpusHasAtLeastTwentyFiveCases) { EXPECT_GE(corpus().size(), 25u); }
+
+TEST(BadInput, EveryCaseIsRejectedWithFileLineKeyPathAndExpectation) {
+  for (const BadCase& bad : corpus()) {
+    SCOPED_TRACE(bad.path);
+    ASSERT_GT(bad.line, 0) << "the file marks no line with '# <-- error'";
+    const testing::CommandResult result = testing::run_command_line(testing::heavesim_binary() + " check " + bad.path);
+    EXPECT_EQ(result.exit_code, 2) << result.output;
+    const std::string position = bad.path + ":" + std::to_string(bad.line) + ":";
+    EXPECT_NE(result.output.find(position), std::string::npos) << "no '" << position << "' in: " << result.output;
+    if (!bad.key_path.empty()) {
+      EXPECT_NE(result.output.find(": " + bad.key_path + ": "), std::string::npos) << result.output;
+    }
+    EXPECT_NE(result.output.find("found "), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("expected "), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find(bad.text), std::string::npos) << "no '" << bad.text << "' in: " << result.output;
+  }
+}
+
+TEST(BadInput, MissingCaseFileIsBadInput) {
+  const testing::CommandResult result = testing::run_command_line(testing::heavesim_binary() + " run /nonexistent.yaml");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("/nonexistent.yaml"), std::string::npos);
+}
+
+TEST(BadInput, BadCommandLineOverrideIsBadInput) {
+  const testing::CommandResult result = testing::run_command_line(
+      testing::heavesim_binary() + " check " + testing::source_path("cases/validation/two_link.yaml") +
+      " --set solver.t_end=never");
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.output.find("--set solver.t_end"), std::string::npos) << result.output;
+}
+
+}  // namespace
+}  // namespace heavesim

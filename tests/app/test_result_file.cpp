@@ -1,0 +1,145 @@
+// The result-file contract (docs/result-file.md): attributes, datasets with units and
+// descriptions, the complete flag, partial files after a signal or a numerical failure.
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <cmath>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <spawn.h>
+#include <thread>
+
+#include "tests/test_support.hpp"
+
+extern char** environ;
+
+namespace heavesim {
+namespace {
+
+class H5File {
+ public:
+  explicit H5File(const std::string& path) { file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); }
+  ~H5File() {
+    if (file_ >= 0) H5Fclose(file_);
+  }
+  bool ok() const { return file_ >= 0; }
+  bool exists(const std::string& path) const { return H5Lexists(file_, path.c_str(), H5P_DEFAULT) > 0; }
+  bool has_attribute(const std::string& object, const std::string& name) const {
+    return H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) > 0;
+  }
+  long long_attribute(const std::string& object, const std::string& name) const {
+    long value = -1;
+    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    H5Aread(attribute, H5T_NATIVE_LONG, &value);
+    H5Aclose(attribute);
+    return value;
+  }
+  std::vector<hsize_t> shape(const std::string& path) const {
+    const hid_t dataset = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    std::vector<hsize_t> dims(H5Sget_simple_extent_ndims(space));
+    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return dims;
+  }
+  std::vector<double> read(const std::string& path) const {
+    std::vector<hsize_t> dims = shape(path);
+    hsize_t size = 1;
+    for (hsize_t d : dims) size *= d;
+    std::vector<double> values(size);
+    const hid_t dataset = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
+    H5Dclose(dataset);
+    return values;
+  }
+
+ private:
+  hid_t file_ = -1;
+};
+
+std::string temporary(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / ("heavesim_" + std::to_string(::getpid()) + "_" + name)).string();
+}
+
+TEST(ResultFile, CompleteRunFollowsTheContract) {
+  const std::string output = temporary("two_link.h5"), csv_directory = temporary("csv");
+  const testing::CommandResult result = testing::run_command_line(
+      testing::heavesim_binary() + " run " + testing::source_path("cases/validation/two_link.yaml") + " -o " + output +
+      " --csv " + csv_directory + " --set solver.t_end=1 --set output.interval=0.1");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  for (const char* attribute : {"heavesim_version", "case_name", "case_sha256", "created_utc", "units_system"})
+    EXPECT_TRUE(file.has_attribute("/", attribute)) << attribute;
+  EXPECT_EQ(file.long_attribute("/", "complete"), 1);
+  EXPECT_TRUE(file.exists("/case/yaml"));
+  EXPECT_EQ(file.shape("/time"), std::vector<hsize_t>({11}));
+  EXPECT_EQ(file.shape("/bodies/link1/position"), std::vector<hsize_t>({11, 3}));
+  EXPECT_EQ(file.shape("/bodies/link1/orientation"), std::vector<hsize_t>({11, 4}));
+  EXPECT_EQ(file.shape("/bodies/link1/velocity"), std::vector<hsize_t>({11, 6}));
+  EXPECT_EQ(file.shape("/joints/elbow/q"), std::vector<hsize_t>({11, 1}));
+  EXPECT_EQ(file.shape("/joints/elbow/reaction_force"), std::vector<hsize_t>({11, 3}));
+  EXPECT_EQ(file.shape("/joints/elbow/reaction_moment"), std::vector<hsize_t>({11, 3}));
+  for (const char* dataset : {"/time", "/joints/shoulder/reaction_force", "/signals/total_energy", "/case/yaml"}) {
+    EXPECT_TRUE(file.has_attribute(dataset, "units")) << dataset;
+    EXPECT_TRUE(file.has_attribute(dataset, "description")) << dataset;
+  }
+  // At release from rest the shoulder carries the full weight minus what the falling links take.
+  const std::vector<double> time = file.read("/time");
+  EXPECT_DOUBLE_EQ(time.back(), 1.0);
+  const std::vector<double> q = file.read("/joints/shoulder/q");
+  EXPECT_DOUBLE_EQ(q.front(), std::acos(0.0));
+  EXPECT_TRUE(std::filesystem::exists(csv_directory + "/two_link.csv"));
+  std::ifstream csv(csv_directory + "/two_link.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find("joints/elbow/reaction_force.x"), std::string::npos) << header;
+  std::filesystem::remove(output);
+  std::filesystem::remove_all(csv_directory);
+}
+
+TEST(ResultFile, SignalStopsTheRunAndLeavesAReadableIncompleteFile) {
+  const std::string output = temporary("long_run.h5");
+  const std::string binary = testing::heavesim_binary(), case_path = testing::source_path("tests/cases/long_run.yaml");
+  std::vector<char*> argv = {const_cast<char*>(binary.c_str()), const_cast<char*>("run"),
+                             const_cast<char*>(case_path.c_str()), const_cast<char*>("-o"),
+                             const_cast<char*>(output.c_str()), const_cast<char*>("--quiet"), nullptr};
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, binary.c_str(), nullptr, nullptr, argv.data(), environ), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(pid, SIGTERM);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  EXPECT_EQ(file.long_attribute("/", "complete"), 0);
+  const std::vector<double> time = file.read("/time");
+  ASSERT_GT(time.size(), 1u);
+  EXPECT_LT(time.back(), 1000.0);
+  EXPECT_EQ(file.shape("/joints/pivot/reaction_force")[0], time.size());
+  std::filesystem::remove(output);
+}
+
+TEST(ResultFile, NumericalFailureExitsWithCodeThreeAndADiagnosis) {
+  const std::string output = temporary("unstable.h5");
+  const testing::CommandResult result = testing::run_command_line(
+      testing::heavesim_binary() + " run " + testing::source_path("tests/cases/unstable_spring.yaml") + " -o " + output);
+  EXPECT_EQ(result.exit_code, 3) << result.output;
+  EXPECT_NE(result.output.find("joint 'slide'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("suggestion"), std::string::npos) << result.output;
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  EXPECT_EQ(file.long_attribute("/", "complete"), 0);
+  EXPECT_TRUE(file.has_attribute("/", "failure"));
+  EXPECT_TRUE(file.has_attribute("/", "failure_time"));
+  // Everything recorded before the failure is finite: no silent NaN in the file.
+  for (double value : file.read("/joints/slide/q")) EXPECT_TRUE(std::isfinite(value));
+  std::filesystem::remove(output);
+}
+
+}  // namespace
+}  // namespace heavesim

@@ -1,0 +1,10 @@
+#pragma once
+// Forced in front of every source of the no-malloc test build (-include): makes
+// Eigen's runtime allocation check active in optimized builds and turns a violation
+// into an exception the test can see, instead of an abort.
+#include <stdexcept>
+#define EIGEN_RUNTIME_NO_MALLOC
+#define eigen_assert(condition) \
+  do {                          \
+    if (!(condition)) throw std::runtime_error("Eigen assertion failed: " #condition); \
+  } while (false)

@@ -1,0 +1,26 @@
+// The validation suite (docs/validation.md) must pass at its stated bars.
+#include <gtest/gtest.h>
+
+#include "validation/checks/validation_suite.hpp"
+
+namespace heavesim::validation {
+namespace {
+
+class ValidationSuite : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ValidationSuite, EveryRowPassesItsBar) {
+  for (const ValidationCheck& check : validation_checks()) {
+    if (check.id != GetParam()) continue;
+    const std::vector<ValidationRow> rows = check.run();
+    ASSERT_FALSE(rows.empty());
+    for (const ValidationRow& row : rows)
+      EXPECT_LE(row.max_error, row.tolerance) << row.subject << ": " << row.quantity;
+    return;
+  }
+  FAIL() << "no check " << GetParam();
+}
+
+INSTANTIATE_TEST_SUITE_P(Kernel, ValidationSuite, ::testing::Values("K1", "K2", "K3", "K5", "K6"));
+
+}  // namespace
+}  // namespace heavesim::validation
