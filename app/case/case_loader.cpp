@@ -116,24 +116,34 @@ void read_bodies(const NodeReader& section, CaseDefinition& definition) {
 
 // ---------------------------------------------------------------- joints
 
-JointType read_joint_type(const NodeReader& joint) {
+/// Reads `type` and the axes it needs into the definition.
+void read_joint_kind(const NodeReader& joint, JointDefinition& def) {
   const std::string type =
       joint["type"].choice({"fixed", "revolute", "prismatic", "cylindrical", "universal", "spherical", "free"});
-  auto axis = [&]() { return joint["axis"].unit_vector3(); };
-  if (type == "fixed") return FixedJoint{};
-  if (type == "revolute") return RevoluteJoint{axis()};
-  if (type == "prismatic") return PrismaticJoint{axis()};
-  if (type == "cylindrical") return CylindricalJoint{axis()};
-  if (type == "spherical") return SphericalJoint{};
-  if (type == "free") return FreeJoint{};
+  def.kind = type == "fixed"         ? JointKind::fixed
+             : type == "revolute"    ? JointKind::revolute
+             : type == "prismatic"   ? JointKind::prismatic
+             : type == "cylindrical" ? JointKind::cylindrical
+             : type == "universal"   ? JointKind::universal
+             : type == "spherical"   ? JointKind::spherical
+                                     : JointKind::free;
+  const bool axial = def.kind == JointKind::revolute || def.kind == JointKind::prismatic ||
+                     def.kind == JointKind::cylindrical;
+  if (axial) def.axis = joint["axis"].unit_vector3();
+  if (!axial && joint.has("axis"))
+    joint["axis"].fail("an axis on a " + type + " joint", "no 'axis' (only revolute, prismatic, cylindrical)");
+  if (def.kind != JointKind::universal) {
+    if (joint.has("axes")) joint["axes"].fail("'axes' on a " + type + " joint", "no 'axes' (only universal joints)");
+    return;
+  }
   const NodeReader axes = joint["axes"];
   const std::vector<NodeReader> items = axes.items();
   if (items.size() != 2) axes.fail("two unit axes [[x, y, z], [x, y, z]]");
-  UniversalJoint universal{items[0].unit_vector3(), items[1].unit_vector3()};
-  if (std::abs(universal.axis1.dot(universal.axis2)) > 1e-6)
-    axes.fail(fmt::format("axes at {:.4g} degrees", std::acos(universal.axis1.dot(universal.axis2)) * 180 / M_PI),
+  def.axis = items[0].unit_vector3();
+  def.second_axis = items[1].unit_vector3();
+  if (std::abs(def.axis.dot(def.second_axis)) > 1e-6)
+    axes.fail(fmt::format("axes at {:.4g} degrees", std::acos(def.axis.dot(def.second_axis)) * 180 / M_PI),
               "perpendicular axes (a Hooke joint)");
-  return universal;
 }
 
 /// A number, or a list of exactly `size` numbers.
@@ -163,8 +173,7 @@ VectorX read_configuration(const NodeReader& reader, const JointType& type) {
   return q;
 }
 
-JointInitialState read_initial_state(const std::optional<NodeReader>& reader, const JointType& type,
-                                     const std::string& type_name) {
+JointInitialState read_initial_state(const std::optional<NodeReader>& reader, const JointType& type) {
   const int nq = joint_nq(type), nv = joint_nv(type);
   JointInitialState state;
   state.q = VectorX::Zero(nq);
@@ -200,7 +209,6 @@ JointInitialState read_initial_state(const std::optional<NodeReader>& reader, co
   // Named velocities are given in the parent frame; the kernel's are child-side (body) axes.
   if (auto omega = reader->optional("angular_velocity")) state.v.head<3>() = R.transpose() * omega->vector3();
   if (auto velocity = reader->optional("velocity")) state.v.tail<3>() = R.transpose() * velocity->vector3();
-  (void)type_name;
   return state;
 }
 
@@ -250,22 +258,16 @@ void read_joints(const NodeReader& section, CaseDefinition& definition) {
     if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique joint name");
     JointDefinition def;
     def.name = name;
-    def.type = read_joint_type(joint);
-    const std::string type_name = joint_type_name(def.type);
-    const bool uses_axis = std::holds_alternative<RevoluteJoint>(def.type) ||
-                           std::holds_alternative<PrismaticJoint>(def.type) ||
-                           std::holds_alternative<CylindricalJoint>(def.type);
-    if (!uses_axis && joint.has("axis"))
-      joint["axis"].fail("an axis on a " + type_name + " joint", "no 'axis' (only revolute, prismatic, cylindrical)");
-    if (!std::holds_alternative<UniversalJoint>(def.type) && joint.has("axes"))
-      joint["axes"].fail("'axes' on a " + type_name + " joint", "no 'axes' (only universal joints)");
+    read_joint_kind(joint, def);
+    const JointType type = canonical_joint_type(def.kind);
+    const std::string type_name = joint_type_name(type);
     def.parent = joint["parent"].text();
     def.child = joint["child"].text();
     def.X_parent_joint = read_frame(joint.optional("parent_frame"));
     def.X_child_joint = read_frame(joint.optional("child_frame"));
-    if (auto spring = joint.optional("spring")) def.spring = read_spring(*spring, def.type, type_name);
-    if (auto limits = joint.optional("limits")) def.limits = read_limits(*limits, def.type, type_name);
-    definition.initial_states[name] = read_initial_state(joint.optional("initial"), def.type, type_name);
+    if (auto spring = joint.optional("spring")) def.spring = read_spring(*spring, type, type_name);
+    if (auto limits = joint.optional("limits")) def.limits = read_limits(*limits, type, type_name);
+    definition.initial_states[name] = read_initial_state(joint.optional("initial"), type);
     definition.joint_paths[name] = joint.path();
     auto& fields = definition.joint_field_locations[name];
     fields["name"] = name_reader.location();

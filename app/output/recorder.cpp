@@ -118,16 +118,16 @@ void Recorder::define_channels(const CaseDefinition& definition) {
       peak_reactions_.emplace_back(joint.name, 0.0);
       add({base + "/reaction_force", 3, "N",
            "force exerted by the parent on the child at the joint origin, world axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).force_world; }});
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).force_world; }});
       add({base + "/reaction_moment", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, world axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).moment_world; }});
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).moment_world; }});
       add({base + "/reaction_force_joint", 3, "N",
            "force exerted by the parent on the child, joint (child-side) axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).force_joint; }});
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).force_joint; }});
       add({base + "/reaction_moment_joint", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, joint (child-side) axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.data(), i).moment_joint; }});
+           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).moment_joint; }});
     }
   }
 
@@ -162,7 +162,7 @@ void Recorder::record(double t, const VectorX& y) {
   const MultibodySystem& system = *scene_.system;
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k)
     peak_reactions_[k].second =
-        std::max(peak_reactions_[k].second, joint_reaction(system.data(), reaction_joints_[k]).force_world.norm());
+        std::max(peak_reactions_[k].second, joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm());
   const double kinetic = kinetic_energy(system.model(), system.data());
   const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
                         joint_elastic_energy(system.model(), system.configuration());

@@ -6,7 +6,7 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
                                                  ExternalForces external_forces_world) {
   const int n = model.num_links();
   for (int i = 1; i < n; ++i) {
-    data.articulated_inertia_world[i] = data.inertia_world[i];
+    data.articulated_inertia_world[i] = link_inertia_matrix(model, data, i);
     data.articulated_bias_world[i] = data.bias_force_world[i] - data.gravity_force_world[i];
     if (!external_forces_world.empty()) data.articulated_bias_world[i] -= external_forces_world[i];
   }
@@ -21,13 +21,13 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
       const Vector6 S = data.motion_subspace_world.col(joint.v_index);
       const Vector6 U = IA * S;
       const double D_inverse = 1.0 / S.dot(U);
-      const double u = tau[joint.v_index] - S.dot(pA.vector());
+      const double u = tau[joint.v_index] - dot(S, pA);
       data.aba_U.col(joint.v_index) = U;
       data.aba_D_inverse[i](0, 0) = D_inverse;
       data.aba_u[joint.v_index] = u;
       if (joint.parent > 0) {
         const Matrix6 Ia = IA - D_inverse * U * U.transpose();
-        data.articulated_bias_world[joint.parent].vector() += pA.vector() + Ia * c.vector() + (D_inverse * u) * U;
+        data.articulated_bias_world[joint.parent] += pA + Ia * c + Force(U * (D_inverse * u));
         data.articulated_inertia_world[joint.parent] += Ia;
       }
     } else if (joint.nv > 1) {
@@ -41,11 +41,11 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
       if (joint.parent > 0) {
         const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> UD = U * data.aba_D_inverse[i];
         const Matrix6 Ia = IA - UD * U.transpose();
-        data.articulated_bias_world[joint.parent].vector() += pA.vector() + Ia * c.vector() + UD * u;
+        data.articulated_bias_world[joint.parent] += pA + Ia * c + Force(UD * u);
         data.articulated_inertia_world[joint.parent] += Ia;
       }
     } else if (joint.parent > 0) {
-      data.articulated_bias_world[joint.parent].vector() += pA.vector() + IA * c.vector();
+      data.articulated_bias_world[joint.parent] += pA + IA * c;
       data.articulated_inertia_world[joint.parent] += IA;
     }
   }
@@ -56,15 +56,15 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
     Motion a = data.acceleration_world[joint.parent] + data.bias_acceleration_world[i];
     if (joint.nv == 1) {
       const double qdd = data.aba_D_inverse[i](0, 0) *
-                         (data.aba_u[joint.v_index] - data.aba_U.col(joint.v_index).dot(a.vector()));
+                         (data.aba_u[joint.v_index] - dot(a, Force(data.aba_U.col(joint.v_index))));
       data.qdd[joint.v_index] = qdd;
-      a.vector() += qdd * data.motion_subspace_world.col(joint.v_index);
+      a += Motion(data.motion_subspace_world.col(joint.v_index) * qdd);
     } else if (joint.nv > 1) {
       const SmallVector residual = data.aba_u.segment(joint.v_index, joint.nv) -
                                    data.aba_U.middleCols(joint.v_index, joint.nv).transpose() * a.vector();
       auto qdd = data.qdd.segment(joint.v_index, joint.nv);
       qdd.noalias() = data.aba_D_inverse[i] * residual;
-      a.vector().noalias() += data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd;
+      a += Motion(data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd);
     }
     data.acceleration_world[i] = a;
   }

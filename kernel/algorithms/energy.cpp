@@ -1,11 +1,13 @@
 #include "kernel/algorithms/energy.hpp"
 
+#include "kernel/algorithms/kinematics.hpp"
+
 namespace heavesim {
 
 double kinetic_energy(const Model& model, const Data& data) {
   double energy = 0.0;
   for (int i = 1; i < model.num_links(); ++i)
-    energy += 0.5 * data.velocity_world[i].vector().dot(data.inertia_world[i] * data.velocity_world[i].vector());
+    energy += 0.5 * dot(data.velocity_world[i], link_momentum(model, data, i, data.velocity_world[i]));
   return energy;
 }
 

@@ -8,20 +8,19 @@ const VectorX& inverse_dynamics(const Model& model, Data& data, const VectorX& q
   for (int i = 1; i < n; ++i) {
     const Joint& joint = model.joints[i];
     Motion a = data.acceleration_world[joint.parent] + data.bias_acceleration_world[i];
-    if (joint.nv > 0)
-      a.vector().noalias() +=
-          data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd.segment(joint.v_index, joint.nv);
+    if (joint.nv == 1)
+      a += Motion(data.motion_subspace_world.col(joint.v_index) * qdd[joint.v_index]);
+    else if (joint.nv > 1)
+      a += Motion(data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd.segment(joint.v_index, joint.nv));
     data.acceleration_world[i] = a;
-    Force f = data.inertia_world[i] * a + data.bias_force_world[i] - data.gravity_force_world[i];
+    Force f = link_momentum(model, data, i, a) + data.bias_force_world[i] - data.gravity_force_world[i];
     if (!external_forces_world.empty()) f -= external_forces_world[i];
     data.joint_wrench_world[i] = f;
   }
   for (int i = n - 1; i >= 1; --i) {
     const Joint& joint = model.joints[i];
-    if (joint.nv > 0)
-      data.tau.segment(joint.v_index, joint.nv).noalias() =
-          data.motion_subspace_world.middleCols(joint.v_index, joint.nv).transpose() *
-          data.joint_wrench_world[i].vector();
+    for (int k = 0; k < joint.nv; ++k)
+      data.tau[joint.v_index + k] = dot(data.motion_subspace_world.col(joint.v_index + k), data.joint_wrench_world[i]);
     if (joint.parent > 0) data.joint_wrench_world[joint.parent] += data.joint_wrench_world[i];
   }
   return data.tau;

@@ -12,8 +12,8 @@ namespace heavesim {
 struct JointReaction {
   Vector3 force_world;   // N, world axes
   Vector3 moment_world;  // N m, world axes, about the joint origin
-  Vector3 force_joint;   // N, joint (child-side) axes
-  Vector3 moment_joint;  // N m, joint axes, about the joint origin
+  Vector3 force_joint;   // N, the user's child-side joint frame axes
+  Vector3 moment_joint;  // N m, the same axes, about the joint origin
 };
 
 /// Fills data.joint_wrench_world for the accelerations in data.qdd (call after
@@ -22,6 +22,6 @@ struct JointReaction {
 void compute_joint_wrenches(const Model& model, Data& data, ExternalForces external_forces_world = {});
 
 /// Reaction of joint i (>= 1) from data.joint_wrench_world.
-JointReaction joint_reaction(const Data& data, int joint_index);
+JointReaction joint_reaction(const Model& model, const Data& data, int joint_index);
 
 }  // namespace heavesim

@@ -4,7 +4,7 @@ namespace heavesim {
 
 const MatrixX& mass_matrix(const Model& model, Data& data) {
   const int n = model.num_links();
-  for (int i = 1; i < n; ++i) data.composite_inertia_world[i] = data.inertia_world[i];
+  for (int i = 1; i < n; ++i) data.composite_inertia_world[i] = link_inertia_matrix(model, data, i);
   for (int i = n - 1; i >= 1; --i) {
     const Joint& joint = model.joints[i];
     if (joint.parent > 0) data.composite_inertia_world[joint.parent] += data.composite_inertia_world[i];

@@ -13,6 +13,10 @@ struct FixedJoint {
   Transform transform(const double*) const { return Transform::Identity(); }
   MotionSubspace<0> motion_subspace(const double*) const { return MotionSubspace<0>(); }
   Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
+  void place(const Transform& X_world_joint, const double*, Transform& X_world_link) const {
+    X_world_link = X_world_joint;
+  }
+  void world_motion_subspace(const Transform&, const double*, double*) const {}
   void configuration_derivative(const double*, const double*, double*) const {}
   void integrate(const double*, const double*, double, double*) const {}
   void difference(const double*, const double*, double*) const {}

@@ -19,6 +19,12 @@ struct FreeJoint {
   }
   MotionSubspace<6> motion_subspace(const double*) const { return MotionSubspace<6>::Identity(); }
   Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
+  void place(const Transform& X_world_joint, const double* q, Transform& X_world_link) const {
+    X_world_link = X_world_joint * transform(q);
+  }
+  void world_motion_subspace(const Transform& X_world_link, const double* q, double* S) const {
+    act_on_subspace<nv>(X_world_link, motion_subspace(q), S);
+  }
   void configuration_derivative(const double* q, const double* v, double* qdot) const {
     const Eigen::Quaterniond orientation = quaternion_from_wxyz(map4(q + 3));
     map3(qdot) = orientation * map3(v + 3);

@@ -1,5 +1,6 @@
 #pragma once
-// The joint library as one closed set of concrete types (Pinocchio-style variant).
+// The joint library as one closed set of concrete types (Pinocchio-style variant),
+// and the user-facing joint kinds from which the model builder makes them.
 #include <string>
 #include <variant>
 
@@ -15,6 +16,23 @@ namespace heavesim {
 
 using JointType = std::variant<FixedJoint, RevoluteJoint, PrismaticJoint, CylindricalJoint,
                                UniversalJoint, SphericalJoint, FreeJoint>;
+
+/// The kinds of joint a user can ask for; axes come separately (JointDefinition).
+enum class JointKind { fixed, revolute, prismatic, cylindrical, universal, spherical, free };
+
+/// The canonical joint type of a kind (axis on z; universal about x then y).
+inline JointType canonical_joint_type(JointKind kind) {
+  switch (kind) {
+    case JointKind::fixed: return FixedJoint{};
+    case JointKind::revolute: return RevoluteJoint{};
+    case JointKind::prismatic: return PrismaticJoint{};
+    case JointKind::cylindrical: return CylindricalJoint{};
+    case JointKind::universal: return UniversalJoint{};
+    case JointKind::spherical: return SphericalJoint{};
+    case JointKind::free: return FreeJoint{};
+  }
+  return FixedJoint{};
+}
 
 inline int joint_nq(const JointType& type) {
   return std::visit([](const auto& j) { return std::decay_t<decltype(j)>::nq; }, type);

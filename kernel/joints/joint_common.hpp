@@ -1,23 +1,30 @@
 #pragma once
-// What every joint type provides (checked at compile time by the variant visitors):
+// What every joint type provides (checked at compile time by the variant visitors).
+// Joint types are canonical: the model builder rotates each joint's frames once so
+// that a revolute, prismatic or cylindrical axis is the joint frame's z axis and a
+// universal joint turns about x then y (Model::Joint keeps the rotation back to the
+// user's axes). That makes X_J sparse, which is most of the kernel's per-body cost.
 //
 //   static constexpr int nq, nv;          configuration and velocity sizes
 //   static constexpr const char* type_name;
-//   Transform transform(const double* q)  X_J: the joint's child-side frame in its
-//                                         parent-side frame
-//   MotionSubspace motion_subspace(q)     S (6 x nv): relative spatial velocity of the
-//                                         child side is S v, in child-side coordinates
-//   Motion bias_acceleration(q, v)        c_J = (dS/dt) v, child-side coordinates;
-//                                         evaluated only when has_bias_acceleration
-//                                         (Featherstone 2008, eq. 4.13)
+//   static constexpr bool has_bias_acceleration;
+//   Transform transform(const double* q)  X_J: the child-side frame in the parent-side frame
+//   MotionSubspace motion_subspace(q)     S (6 x nv): the child side's relative spatial
+//                                         velocity is S v, in child-side coordinates
+//   Motion bias_acceleration(q, v)        c_J = (dS/dt) v, child-side coordinates
+//                                         (Featherstone 2008, eq. 4.13); only read when
+//                                         has_bias_acceleration
+//   void place(X_world_joint, q, X_world_link)      X_world_link = X_world_joint X_J(q),
+//                                         exploiting the sparsity of X_J
+//   void world_motion_subspace(X_world_link, q, S)  S_world = X_world_link S (6 x nv,
+//                                         column-major at S)
 //   void configuration_derivative(q, v, qdot)     qdot = N(q) v
 //   void integrate(q, v, dt, q_out)       q_out = q "+" v dt, staying on the manifold
 //   void difference(q0, q1, dv)           dv such that integrate(q0, dv, 1) = q1
 //   void neutral(q), normalize(q)
 //
 // Raw pointers index into the model-wide q and v vectors; each joint reads nq / nv
-// entries from them. Frames: the joint frame's origin is the joint point; axes are
-// given in it.
+// entries from them.
 #include "kernel/spatial/rotation.hpp"
 #include "kernel/spatial/transform.hpp"
 
@@ -31,5 +38,27 @@ inline Eigen::Map<Vector3> map3(double* p) { return Eigen::Map<Vector3>(p); }
 inline Eigen::Map<const Vector3> map3(const double* p) { return Eigen::Map<const Vector3>(p); }
 inline Eigen::Map<Eigen::Vector4d> map4(double* p) { return Eigen::Map<Eigen::Vector4d>(p); }
 inline Eigen::Map<const Eigen::Vector4d> map4(const double* p) { return Eigen::Map<const Eigen::Vector4d>(p); }
+
+/// X_out = X * Rz(angle), computed on the two columns Rz changes.
+HEAVESIM_INLINE void rotate_about_z(const Transform& X, double angle, Transform& X_out) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  const Matrix3& R = X.rotation();
+  Matrix3& R_out = X_out.rotation();
+  const Vector3 x = R.col(0), y = R.col(1);
+  R_out.col(0) = c * x + s * y;
+  R_out.col(1) = c * y - s * x;
+  R_out.col(2) = R.col(2);
+  X_out.translation() = X.translation();
+}
+
+/// S_world = X S for a general joint (column by column).
+template <int NV>
+HEAVESIM_INLINE void act_on_subspace(const Transform& X, const MotionSubspace<NV>& S_local, double* S_world) {
+  for (int k = 0; k < NV; ++k) {
+    const Motion column = X.act(Motion(S_local.col(k)));
+    map3(S_world + 6 * k) = column.angular();
+    map3(S_world + 6 * k + 3) = column.linear();
+  }
+}
 
 }  // namespace heavesim

@@ -21,6 +21,12 @@ struct SphericalJoint {
     return S;
   }
   Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
+  void place(const Transform& X_world_joint, const double* q, Transform& X_world_link) const {
+    X_world_link = X_world_joint * transform(q);
+  }
+  void world_motion_subspace(const Transform& X_world_link, const double* q, double* S) const {
+    act_on_subspace<nv>(X_world_link, motion_subspace(q), S);
+  }
   void configuration_derivative(const double* q, const double* v, double* qdot) const {
     quaternion_derivative(map4(q), map3(v),
                           map4(qdot));

@@ -3,32 +3,35 @@
 
 namespace heavesim {
 
-/// Hooke joint: rotation q[0] about axis1 (parent-side joint frame), then q[1] about
-/// axis2 (in the intermediate frame; equals axis2 of the joint frame at q = 0).
-/// R = Rot(axis1, q0) Rot(axis2, q1); no translation.
-/// Child-side angular velocity: w = R2^T axis1 qd0 + axis2 qd1, so
-///   S = [[R2^T axis1, axis2]; [0, 0]],
-///   c_J = dS/dt v = [-qd0 qd1 axis2 x (R2^T axis1); 0]   (dR2^T/dt = -qd1 [axis2]x R2^T).
+/// Hooke joint: rotation q[0] about the joint frame's x axis, then q[1] about the
+/// intermediate frame's y axis: R = Rx(q0) Ry(q1); no translation.
+/// Child-side angular velocity: w = Ry(q1)^T e_x qd0 + e_y qd1 = (c1, 0, s1) qd0 + e_y qd1, so
+///   S = [[(c1, 0, s1), e_y]; [0, 0]],
+///   c_J = dS/dt v = [(-s1, 0, c1) qd0 qd1; 0].
 struct UniversalJoint {
   static constexpr int nq = 2, nv = 2;
   static constexpr const char* type_name = "universal";
   static constexpr bool has_bias_acceleration = true;
-  Vector3 axis1 = Vector3::UnitX();
-  Vector3 axis2 = Vector3::UnitY();
 
   Transform transform(const double* q) const {
-    return Transform::from_rotation(axis_angle_rotation(axis1, q[0]) *
-                                    axis_angle_rotation(axis2, q[1]));
+    return Transform::from_rotation(axis_angle_rotation(Vector3::UnitX(), q[0]) *
+                                    axis_angle_rotation(Vector3::UnitY(), q[1]));
   }
   MotionSubspace<2> motion_subspace(const double* q) const {
     MotionSubspace<2> S = MotionSubspace<2>::Zero();
-    S.col(0).head<3>() = axis_angle_rotation(axis2, q[1]).transpose() * axis1;
-    S.col(1).head<3>() = axis2;
+    S(0, 0) = std::cos(q[1]);
+    S(2, 0) = std::sin(q[1]);
+    S(1, 1) = 1.0;
     return S;
   }
   Motion bias_acceleration(const double* q, const double* v) const {
-    const Vector3 axis1_child = axis_angle_rotation(axis2, q[1]).transpose() * axis1;
-    return Motion(-v[0] * v[1] * axis2.cross(axis1_child), Vector3::Zero());
+    return Motion(Vector3(-std::sin(q[1]), 0.0, std::cos(q[1])) * (v[0] * v[1]), Vector3::Zero());
+  }
+  void place(const Transform& X_world_joint, const double* q, Transform& X_world_link) const {
+    X_world_link = X_world_joint * transform(q);
+  }
+  void world_motion_subspace(const Transform& X_world_link, const double* q, double* S) const {
+    act_on_subspace<2>(X_world_link, motion_subspace(q), S);
   }
   void configuration_derivative(const double*, const double* v, double* qdot) const {
     qdot[0] = v[0];

@@ -4,10 +4,10 @@ namespace heavesim {
 
 Data::Data(const Model& model) {
   const int n = model.num_links();
-  X_parent_link.assign(n, Transform::Identity());
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
-  inertia_world.assign(n, Matrix6::Zero());
+  rigid_inertia_world.assign(n, Inertia());
+  added_inertia_world.assign(n, Matrix6::Zero());
   gravity_force_world.assign(n, Force::Zero());
   velocity_world.assign(n, Motion::Zero());
   bias_acceleration_world.assign(n, Motion::Zero());

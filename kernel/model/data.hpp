@@ -18,10 +18,10 @@ struct Data {
   explicit Data(const Model& model);
 
   // --- position stage (update_positions) ---
-  AlignedVector<Transform> X_parent_link;   // link frame in its parent link frame
   AlignedVector<Transform> X_world_link;    // link frame in the world
   Matrix6X motion_subspace_world;           // 6 x nv: column k = spatial motion per unit v_k
-  AlignedVector<Matrix6> inertia_world;     // total spatial inertia (rigid + added) per link
+  AlignedVector<Inertia> rigid_inertia_world;  // rigid-body inertia of each link
+  AlignedVector<Matrix6> added_inertia_world;  // added inertia (e.g. hydrodynamic), links that have one
   AlignedVector<Force> gravity_force_world; // weight m g at the link CoM
 
   // --- velocity stage (update_velocities) ---

@@ -5,8 +5,9 @@
 // Link i >= 1 is the child of joint i; links are in depth-first order, so a parent
 // always precedes its children and every subtree occupies the contiguous index
 // range [i, subtree_end[i]).
-// Link frame i is the child-side frame of joint i (origin at the joint point);
-// the user's body frame is placed in it by X_link_body (used for outputs only).
+// Link frame i is the child-side frame of joint i (origin at the joint point), turned
+// so that the joint axis is its z axis; the user's body frame is placed in it by
+// X_link_body and the user's joint frame by Joint::R_joint_link (outputs only).
 #include <limits>
 #include <optional>
 #include <string>
@@ -41,9 +42,10 @@ struct JointLimits {
 
 struct Joint {
   std::string name;
-  JointType type;
+  JointType type;         // canonical: axis on the joint frame's z (universal: x then y)
   int parent = -1;        // parent link index
-  Transform placement;    // X_parentlink_joint: parent-side joint frame in the parent link frame
+  Transform placement;    // X_parentlink_joint: parent-side (canonical) joint frame in the parent link frame
+  Matrix3 R_joint_link = Matrix3::Identity();  // link (canonical joint) axes in the user's joint frame
   int q_index = 0, v_index = 0, nq = 0, nv = 0;
   std::optional<JointSpringDamper> spring;
   std::optional<JointLimits> limits;

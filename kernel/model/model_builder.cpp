@@ -46,6 +46,32 @@ void check_body(const BodyDefinition& body) {
                      "moments satisfying the triangle inequality (each <= the sum of the other two)");
 }
 
+/// The canonical joint frame's axes in the user's joint frame: Q e_z = axis for
+/// axial joints; Q e_x = axis, Q e_y = second_axis for a universal joint.
+Matrix3 canonical_axes(const JointDefinition& joint) {
+  if (std::abs(joint.axis.norm() - 1.0) > 1e-6)
+    throw joint_error(joint.name, "axis", "an axis of length " + format_number(joint.axis.norm()), "a unit vector");
+  Matrix3 Q = Matrix3::Identity();
+  switch (joint.kind) {
+    case JointKind::revolute:
+    case JointKind::prismatic:
+    case JointKind::cylindrical: {
+      const Vector3 z = joint.axis, x = z.unitOrthogonal();
+      Q << x, z.cross(x), z;
+      break;
+    }
+    case JointKind::universal:
+      if (std::abs(joint.second_axis.norm() - 1.0) > 1e-6 || std::abs(joint.axis.dot(joint.second_axis)) > 1e-6)
+        throw joint_error(joint.name, "axes", "axes that are not perpendicular unit vectors",
+                          "perpendicular unit axes (a Hooke joint)");
+      Q << joint.axis, joint.second_axis, joint.axis.cross(joint.second_axis);
+      break;
+    default:
+      break;
+  }
+  return Q;
+}
+
 }  // namespace
 
 Model ModelBuilder::build() const {
@@ -101,13 +127,16 @@ Model ModelBuilder::build() const {
       const JointDefinition& def = joints_[j];
       const BodyDefinition& body = bodies_[body_index.at(def.child)];
       const int link_id = model.num_links();
+      const Matrix3 Q = canonical_axes(def);
       Joint joint;
       joint.name = def.name;
-      joint.type = def.type;
+      joint.type = canonical_joint_type(def.kind);
       joint.parent = parent_link;
-      joint.placement = def.X_parent_joint;
-      joint.nq = joint_nq(def.type);
-      joint.nv = joint_nv(def.type);
+      // X_parentlink_joint = X_parentlink_parentbody X_parentbody_joint Q.
+      joint.placement = model.links[parent_link].X_link_body * def.X_parent_joint * Transform::from_rotation(Q);
+      joint.R_joint_link = Q;
+      joint.nq = joint_nq(joint.type);
+      joint.nv = joint_nv(joint.type);
       joint.q_index = model.nq;
       joint.v_index = model.nv;
       joint.spring = def.spring;
@@ -125,8 +154,8 @@ Model ModelBuilder::build() const {
 
       Link link;
       link.name = body.name;
-      // Link frame = child-side joint frame, so body data move by X_link_body = X_child_joint^-1.
-      link.X_link_body = def.X_child_joint.inverse();
+      // Link frame = child-side canonical joint frame: body data move by (X_child_joint Q)^-1.
+      link.X_link_body = (def.X_child_joint * Transform::from_rotation(Q)).inverse();
       link.inertia = body.inertia.transformed(link.X_link_body);
       if (body.added_inertia) link.added_inertia = transform_spatial_inertia(link.X_link_body, *body.added_inertia);
       model.links.push_back(link);

@@ -39,7 +39,10 @@ struct BodyDefinition {
 
 struct JointDefinition {
   std::string name;
-  JointType type;
+  JointKind kind = JointKind::revolute;
+  Vector3 axis = Vector3::UnitZ();         // unit, joint frame: revolute, prismatic, cylindrical;
+                                          // universal: first axis
+  Vector3 second_axis = Vector3::UnitY();  // universal: second axis, perpendicular to `axis`
   std::string parent;                    // body name or "ground"
   std::string child;                     // body name
   Transform X_parent_joint;              // joint frame in the parent body frame

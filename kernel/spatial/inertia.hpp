@@ -22,23 +22,34 @@ class Inertia {
   const Matrix3& inertia_com() const { return inertia_com_; }
 
   /// Momentum h = I v: linear m (v - c x w), angular I_c w + c x linear.
-  Force operator*(const Motion& m) const {
+  HEAVESIM_INLINE Force operator*(const Motion& m) const {
     const Vector3 linear = mass_ * (m.linear() - com_.cross(m.angular()));
     return Force(inertia_com_ * m.angular() + com_.cross(linear), linear);
   }
 
   Matrix6 matrix() const {
+    // -m [c]x [c]x = m (|c|^2 1 - c c^T), written out (this runs once per body per step).
     Matrix6 I;
-    const Matrix3 C = skew(com_);
-    I.topLeftCorner<3, 3>() = inertia_com_ - mass_ * C * C;
-    I.topRightCorner<3, 3>() = mass_ * C;
-    I.bottomLeftCorner<3, 3>() = -mass_ * C;
-    I.bottomRightCorner<3, 3>() = mass_ * Matrix3::Identity();
+    const double m = mass_;
+    const double cx = com_.x(), cy = com_.y(), cz = com_.z();
+    const double mx = m * cx, my = m * cy, mz = m * cz;
+    I(0, 0) = inertia_com_(0, 0) + my * cy + mz * cz;
+    I(1, 1) = inertia_com_(1, 1) + mx * cx + mz * cz;
+    I(2, 2) = inertia_com_(2, 2) + mx * cx + my * cy;
+    I(0, 1) = I(1, 0) = inertia_com_(0, 1) - mx * cy;
+    I(0, 2) = I(2, 0) = inertia_com_(0, 2) - mx * cz;
+    I(1, 2) = I(2, 1) = inertia_com_(1, 2) - my * cz;
+    // m [c]x and its transpose.
+    I(0, 3) = 0.0, I(0, 4) = -mz, I(0, 5) = my;
+    I(1, 3) = mz, I(1, 4) = 0.0, I(1, 5) = -mx;
+    I(2, 3) = -my, I(2, 4) = mx, I(2, 5) = 0.0;
+    I.bottomLeftCorner<3, 3>() = I.topRightCorner<3, 3>().transpose();
+    I.bottomRightCorner<3, 3>() = m * Matrix3::Identity();
     return I;
   }
 
   /// This inertia given in frame B, re-expressed in frame A (X = X_A_B).
-  Inertia transformed(const Transform& X_A_B) const {
+  HEAVESIM_INLINE Inertia transformed(const Transform& X_A_B) const {
     const Matrix3& R = X_A_B.rotation();
     return Inertia(mass_, X_A_B.act_point(com_), R * inertia_com_ * R.transpose());
   }
@@ -83,7 +94,10 @@ inline Matrix6 transform_spatial_inertia(const Transform& X_A_B, const Matrix6& 
   return I_A;
 }
 
-/// I v for a general 6x6 spatial inertia.
-inline Force operator*(const Matrix6& I, const Motion& v) { return Force(Vector6(I * v.vector())); }
+/// I v for a general 6x6 spatial inertia, block by block.
+HEAVESIM_INLINE Force operator*(const Matrix6& I, const Motion& v) {
+  return Force(I.topLeftCorner<3, 3>() * v.angular() + I.topRightCorner<3, 3>() * v.linear(),
+               I.bottomLeftCorner<3, 3>() * v.angular() + I.bottomRightCorner<3, 3>() * v.linear());
+}
 
 }  // namespace heavesim

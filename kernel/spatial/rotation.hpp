@@ -6,9 +6,16 @@
 
 namespace heavesim {
 
-/// Rotation about a unit axis by an angle [rad] (Rodrigues' formula).
-inline Matrix3 axis_angle_rotation(const Vector3& unit_axis, double angle) {
-  return Eigen::AngleAxisd(angle, unit_axis).toRotationMatrix();
+/// Rotation about a unit axis by an angle [rad]: Rodrigues' formula
+/// R = c 1 + s [a]x + (1 - c) a a^T.
+HEAVESIM_INLINE Matrix3 axis_angle_rotation(const Vector3& unit_axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
+  const double x = unit_axis.x(), y = unit_axis.y(), z = unit_axis.z();
+  Matrix3 R;
+  R << t * x * x + c, t * x * y - s * z, t * x * z + s * y,  //
+      t * x * y + s * z, t * y * y + c, t * y * z - s * x,   //
+      t * x * z - s * y, t * y * z + s * x, t * z * z + c;
+  return R;
 }
 
 /// Quaternion from 4 consecutive state entries (w, x, y, z), normalized.

@@ -5,6 +5,12 @@
 // at the frame origin. A Force holds (n, f): moment about the frame origin and force.
 // Both are expressed in some frame that the owner names (X_world, ..._link, ...).
 // Reference: R. Featherstone, Rigid Body Dynamics Algorithms (2008), ch. 2.
+//
+// Storage is two 3-vectors, not one packed 6-vector: nearly all spatial arithmetic
+// (transforms, cross products, rigid inertias) works on the 3-vector halves, and a
+// packed 6-vector built from scalar 3-vector stores and then reloaded with 16-byte
+// loads stalls on store forwarding, several times per body. vector() packs a copy
+// for 6x6 matrix algebra.
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
@@ -13,79 +19,113 @@ class Force;
 
 class Motion {
  public:
-  Motion() : data_(Vector6::Zero()) {}
-  Motion(const Vector3& angular, const Vector3& linear) { data_ << angular, linear; }
-  explicit Motion(const Vector6& data) : data_(data) {}
+  Motion() : angular_(Vector3::Zero()), linear_(Vector3::Zero()) {}
+  Motion(const Vector3& angular, const Vector3& linear) : angular_(angular), linear_(linear) {}
+  /// From any 6-vector expression [angular; linear].
+  template <class Derived>
+  explicit Motion(const Eigen::MatrixBase<Derived>& packed)
+      : angular_(packed.template head<3>()), linear_(packed.template tail<3>()) {}
   static Motion Zero() { return Motion(); }
 
-  auto angular() { return data_.head<3>(); }
-  auto angular() const { return data_.head<3>(); }
-  auto linear() { return data_.tail<3>(); }
-  auto linear() const { return data_.tail<3>(); }
-  Vector6& vector() { return data_; }
-  const Vector6& vector() const { return data_; }
+  Vector3& angular() { return angular_; }
+  const Vector3& angular() const { return angular_; }
+  Vector3& linear() { return linear_; }
+  const Vector3& linear() const { return linear_; }
+  /// Packed copy [angular; linear].
+  Vector6 vector() const {
+    Vector6 packed;
+    packed << angular_, linear_;
+    return packed;
+  }
 
-  Motion operator+(const Motion& other) const { return Motion(Vector6(data_ + other.data_)); }
-  Motion operator-(const Motion& other) const { return Motion(Vector6(data_ - other.data_)); }
-  Motion operator-() const { return Motion(Vector6(-data_)); }
-  Motion operator*(double s) const { return Motion(Vector6(data_ * s)); }
-  Motion& operator+=(const Motion& other) { data_ += other.data_; return *this; }
-  Motion& operator-=(const Motion& other) { data_ -= other.data_; return *this; }
+  HEAVESIM_INLINE Motion operator+(const Motion& o) const { return Motion(angular_ + o.angular_, linear_ + o.linear_); }
+  HEAVESIM_INLINE Motion operator-(const Motion& o) const { return Motion(angular_ - o.angular_, linear_ - o.linear_); }
+  Motion operator-() const { return Motion(-angular_, -linear_); }
+  Motion operator*(double s) const { return Motion(angular_ * s, linear_ * s); }
+  HEAVESIM_INLINE Motion& operator+=(const Motion& o) {
+    angular_ += o.angular_;
+    linear_ += o.linear_;
+    return *this;
+  }
+  Motion& operator-=(const Motion& o) {
+    angular_ -= o.angular_;
+    linear_ -= o.linear_;
+    return *this;
+  }
 
   /// Spatial cross product for motions, this x_m m (Featherstone eq. 2.31):
   /// [w x w_m ; w x v_m + v x w_m].
-  Motion cross(const Motion& m) const {
-    const Vector3 w = angular(), v = linear();
-    return Motion(w.cross(m.angular()), w.cross(m.linear()) + v.cross(m.angular()));
+  HEAVESIM_INLINE Motion cross(const Motion& m) const {
+    return Motion(angular_.cross(m.angular_), angular_.cross(m.linear_) + linear_.cross(m.angular_));
   }
   /// Spatial cross product for forces, this x_f f (Featherstone eq. 2.32):
   /// [w x n + v x f ; w x f].
-  inline Force cross(const Force& f) const;
+  HEAVESIM_INLINE Force cross(const Force& f) const;
 
   /// Velocity of the point p (same frame as this motion) of the moving body.
-  Vector3 point_velocity(const Vector3& p) const { return linear() + angular().cross(p); }
+  Vector3 point_velocity(const Vector3& p) const { return linear_ + angular_.cross(p); }
 
  private:
-  Vector6 data_;
+  Vector3 angular_, linear_;
 };
 
 class Force {
  public:
-  Force() : data_(Vector6::Zero()) {}
-  Force(const Vector3& angular, const Vector3& linear) { data_ << angular, linear; }
-  explicit Force(const Vector6& data) : data_(data) {}
+  Force() : angular_(Vector3::Zero()), linear_(Vector3::Zero()) {}
+  Force(const Vector3& angular, const Vector3& linear) : angular_(angular), linear_(linear) {}
+  /// From any 6-vector expression [moment; force].
+  template <class Derived>
+  explicit Force(const Eigen::MatrixBase<Derived>& packed)
+      : angular_(packed.template head<3>()), linear_(packed.template tail<3>()) {}
   static Force Zero() { return Force(); }
 
   /// A force f acting at point p (both in this frame) as a spatial force about the origin.
   static Force at_point(const Vector3& p, const Vector3& f) { return Force(p.cross(f), f); }
 
-  auto angular() { return data_.head<3>(); }
-  auto angular() const { return data_.head<3>(); }
-  auto linear() { return data_.tail<3>(); }
-  auto linear() const { return data_.tail<3>(); }
-  Vector6& vector() { return data_; }
-  const Vector6& vector() const { return data_; }
+  Vector3& angular() { return angular_; }
+  const Vector3& angular() const { return angular_; }
+  Vector3& linear() { return linear_; }
+  const Vector3& linear() const { return linear_; }
+  Vector6 vector() const {
+    Vector6 packed;
+    packed << angular_, linear_;
+    return packed;
+  }
 
-  Force operator+(const Force& other) const { return Force(Vector6(data_ + other.data_)); }
-  Force operator-(const Force& other) const { return Force(Vector6(data_ - other.data_)); }
-  Force operator-() const { return Force(Vector6(-data_)); }
-  Force operator*(double s) const { return Force(Vector6(data_ * s)); }
-  Force& operator+=(const Force& other) { data_ += other.data_; return *this; }
-  Force& operator-=(const Force& other) { data_ -= other.data_; return *this; }
+  HEAVESIM_INLINE Force operator+(const Force& o) const { return Force(angular_ + o.angular_, linear_ + o.linear_); }
+  HEAVESIM_INLINE Force operator-(const Force& o) const { return Force(angular_ - o.angular_, linear_ - o.linear_); }
+  Force operator-() const { return Force(-angular_, -linear_); }
+  Force operator*(double s) const { return Force(angular_ * s, linear_ * s); }
+  HEAVESIM_INLINE Force& operator+=(const Force& o) {
+    angular_ += o.angular_;
+    linear_ += o.linear_;
+    return *this;
+  }
+  HEAVESIM_INLINE Force& operator-=(const Force& o) {
+    angular_ -= o.angular_;
+    linear_ -= o.linear_;
+    return *this;
+  }
 
   /// Moment of this force system about the point p (same frame).
-  Vector3 moment_about(const Vector3& p) const { return angular() - p.cross(linear()); }
+  Vector3 moment_about(const Vector3& p) const { return angular_ - p.cross(linear_); }
 
  private:
-  Vector6 data_;
+  Vector3 angular_, linear_;
 };
 
-inline Force Motion::cross(const Force& f) const {
-  const Vector3 w = angular(), v = linear();
-  return Force(w.cross(f.angular()) + v.cross(f.linear()), w.cross(f.linear()));
+HEAVESIM_INLINE Force Motion::cross(const Force& f) const {
+  return Force(angular_.cross(f.angular()) + linear_.cross(f.linear()), angular_.cross(f.linear()));
 }
 
 /// Power of a force on a motion (both in the same frame).
-inline double dot(const Motion& m, const Force& f) { return m.vector().dot(f.vector()); }
+HEAVESIM_INLINE double dot(const Motion& m, const Force& f) {
+  return m.angular().dot(f.angular()) + m.linear().dot(f.linear());
+}
+/// Power of a force on a motion given as a packed 6-vector (e.g. a column of S).
+template <class Derived>
+HEAVESIM_INLINE double dot(const Eigen::MatrixBase<Derived>& packed_motion, const Force& f) {
+  return packed_motion.template head<3>().dot(f.angular()) + packed_motion.template tail<3>().dot(f.linear());
+}
 
 }  // namespace heavesim

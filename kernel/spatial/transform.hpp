@@ -25,7 +25,7 @@ class Transform {
   Vector3& translation() { return translation_; }
 
   /// X_A_C = X_A_B * X_B_C.
-  Transform operator*(const Transform& X_B_C) const {
+  HEAVESIM_INLINE Transform operator*(const Transform& X_B_C) const {
     return Transform(rotation_ * X_B_C.rotation_, translation_ + rotation_ * X_B_C.translation_);
   }
   /// X_B_A from X_A_B.
@@ -35,29 +35,29 @@ class Transform {
   }
 
   /// Point coordinates: r_A = X_A_B.act_point(r_B).
-  Vector3 act_point(const Vector3& r_B) const { return rotation_ * r_B + translation_; }
+  HEAVESIM_INLINE Vector3 act_point(const Vector3& r_B) const { return rotation_ * r_B + translation_; }
   Vector3 act_inverse_point(const Vector3& r_A) const {
     return rotation_.transpose() * (r_A - translation_);
   }
 
   /// Motion expressed in B -> expressed in A (omega_A = R w_B, v_A = R v_B + p x omega_A).
-  Motion act(const Motion& m_B) const {
+  HEAVESIM_INLINE Motion act(const Motion& m_B) const {
     const Vector3 w = rotation_ * m_B.angular();
     return Motion(w, rotation_ * m_B.linear() + translation_.cross(w));
   }
   /// Motion expressed in A -> expressed in B.
-  Motion act_inverse(const Motion& m_A) const {
+  HEAVESIM_INLINE Motion act_inverse(const Motion& m_A) const {
     const Matrix3 Rt = rotation_.transpose();
     return Motion(Rt * m_A.angular(),
                   Rt * (m_A.linear() - translation_.cross(m_A.angular())));
   }
   /// Force expressed in B -> expressed in A (f_A = R f_B, n_A = R n_B + p x f_A).
-  Force act(const Force& f_B) const {
+  HEAVESIM_INLINE Force act(const Force& f_B) const {
     const Vector3 f = rotation_ * f_B.linear();
     return Force(rotation_ * f_B.angular() + translation_.cross(f), f);
   }
   /// Force expressed in A -> expressed in B.
-  Force act_inverse(const Force& f_A) const {
+  HEAVESIM_INLINE Force act_inverse(const Force& f_A) const {
     const Matrix3 Rt = rotation_.transpose();
     return Force(Rt * (f_A.angular() - translation_.cross(f_A.linear())), Rt * f_A.linear());
   }

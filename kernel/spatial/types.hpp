@@ -4,6 +4,11 @@
 #include <Eigen/Geometry>
 #include <vector>
 
+/// For the few tiny spatial operations that sit in every per-body loop: GCC does not
+/// always inline them into the large algorithm bodies, and the call costs more than
+/// the arithmetic.
+#define HEAVESIM_INLINE [[gnu::always_inline]] inline
+
 namespace heavesim {
 
 using Vector3 = Eigen::Vector3d;

@@ -24,10 +24,13 @@ TEST(Dynamics, HangingChainAtRestCarriesTheWeightBelowEachJoint) {
   const double masses[3] = {2.0, 3.0, 5.0};
   for (int i = 0; i < 3; ++i) {
     builder.add_body(box("b" + std::to_string(i), masses[i]));
-    JointDefinition joint{"j" + std::to_string(i), i % 2 ? JointType{SphericalJoint{}} : JointType{RevoluteJoint{Vector3::UnitX()}},
-                          i == 0 ? "ground" : "b" + std::to_string(i - 1), "b" + std::to_string(i),
-                          Transform::from_translation(Vector3(0, 0, i == 0 ? 0.0 : -1.0)), Transform::Identity(),
-                          std::nullopt, std::nullopt};
+    JointDefinition joint;
+    joint.name = "j" + std::to_string(i);
+    joint.kind = i % 2 ? JointKind::spherical : JointKind::revolute;
+    joint.axis = Vector3::UnitX();
+    joint.parent = i == 0 ? "ground" : "b" + std::to_string(i - 1);
+    joint.child = "b" + std::to_string(i);
+    joint.X_parent_joint = Transform::from_translation(Vector3(0, 0, i == 0 ? 0.0 : -1.0));
     builder.add_joint(joint);
   }
   const Model model = builder.build();
@@ -41,7 +44,7 @@ TEST(Dynamics, HangingChainAtRestCarriesTheWeightBelowEachJoint) {
   for (int i = 0; i < 3; ++i) {
     double weight_below = 0.0;
     for (int j = i; j < 3; ++j) weight_below += masses[j] * 9.81;
-    const JointReaction reaction = joint_reaction(data, i + 1);
+    const JointReaction reaction = joint_reaction(model, data, i + 1);
     EXPECT_NEAR(reaction.force_world.z(), weight_below, 1e-12 * weight_below);
     EXPECT_NEAR(reaction.force_world.head<2>().norm(), 0.0, 1e-12);
     EXPECT_NEAR(reaction.moment_world.norm(), 0.0, 1e-12);  // every CoM is straight below its joint
@@ -54,8 +57,12 @@ Model oscillator(double mass, double stiffness, std::optional<JointLimits> limit
   ModelBuilder builder;
   builder.set_gravity(gravity);
   builder.add_body({"mass", Inertia(mass, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  JointDefinition joint{"slide", PrismaticJoint{Vector3::UnitZ()}, "ground", "mass", Transform::Identity(),
-                        Transform::Identity(), std::nullopt, limits};
+  JointDefinition joint;
+  joint.name = "slide";
+  joint.kind = JointKind::prismatic;
+  joint.parent = "ground";
+  joint.child = "mass";
+  joint.limits = limits;
   if (stiffness > 0.0)
     joint.spring = JointSpringDamper{JointVector::Constant(1, stiffness), JointVector::Zero(1), JointVector::Zero(1)};
   builder.add_joint(joint);
@@ -105,8 +112,12 @@ TEST(Dynamics, SoftLimitHoldsTheWeightAtTheStaticPenetration) {
 TEST(Dynamics, EnergyOfAPendulumMatchesTheTextbookFormula) {
   ModelBuilder builder;
   builder.add_body({"rod", Inertia(2.0, Vector3(0, 0, -0.6), Vector3(0.24, 0.24, 0.0).asDiagonal()), std::nullopt});
-  builder.add_joint({"pin", RevoluteJoint{Vector3::UnitY()}, "ground", "rod", Transform::Identity(),
-                     Transform::Identity(), std::nullopt, std::nullopt});
+  JointDefinition pin;
+  pin.name = "pin";
+  pin.axis = Vector3::UnitY();
+  pin.parent = "ground";
+  pin.child = "rod";
+  builder.add_joint(pin);
   const Model model = builder.build();
   Data data(model);
   const double theta = 0.7, rate = -1.3;

@@ -5,7 +5,9 @@
 
 #include <random>
 
+#include "kernel/algorithms/kinematics.hpp"
 #include "kernel/joints/joint.hpp"
+#include "kernel/model/model_builder.hpp"
 
 namespace heavesim {
 namespace {
@@ -60,6 +62,16 @@ void check_joint(const J& joint, std::mt19937_64& random) {
   joint.configuration_derivative(q.data(), v.data(), qdot.data());
   EXPECT_LT((qdot - (q_after - q_before) / (2 * h)).norm(), 1e-8) << J::type_name;
 
+  // The world-frame fast paths equal their definitions: X_world X_J and X_world S.
+  Transform X_world_joint(axis_angle_rotation(Vector3(0.2, -0.6, 0.77).normalized(), 0.9), Vector3(0.3, -1.2, 2.0));
+  Transform placed;
+  joint.place(X_world_joint, q.data(), placed);
+  EXPECT_TRUE(placed.is_approx(X_world_joint * X, 1e-14)) << J::type_name;
+  Eigen::Matrix<double, 6, nv> S_world;
+  joint.world_motion_subspace(placed, q.data(), S_world.data());
+  for (int k = 0; k < nv; ++k)
+    EXPECT_LT((S_world.col(k) - placed.act(Motion(S.col(k))).vector()).norm(), 1e-14) << J::type_name;
+
   // difference() inverts integrate().
   Eigen::Matrix<double, nv, 1> recovered;
   joint.difference(q0.data(), q.data(), recovered.data());
@@ -68,14 +80,57 @@ void check_joint(const J& joint, std::mt19937_64& random) {
 
 TEST(Joints, SubspaceBiasAndConfigurationMapsMatchFiniteDifferences) {
   std::mt19937_64 random(7);
-  const Vector3 axis = Vector3(0.3, -0.5, 0.8).normalized();
   for (int trial = 0; trial < 20; ++trial) {
-    check_joint(RevoluteJoint{axis}, random);
-    check_joint(PrismaticJoint{axis}, random);
-    check_joint(CylindricalJoint{axis}, random);
-    check_joint(UniversalJoint{axis, axis.unitOrthogonal()}, random);
+    check_joint(RevoluteJoint{}, random);
+    check_joint(PrismaticJoint{}, random);
+    check_joint(CylindricalJoint{}, random);
+    check_joint(UniversalJoint{}, random);
     check_joint(SphericalJoint{}, random);
     check_joint(FreeJoint{}, random);
+  }
+}
+
+/// The builder turns joints with arbitrary axes into canonical ones; the user must
+/// see the physics of the frames and axes they gave. A two-joint chain with
+/// non-trivial frames on both sides of both joints: each body's world pose must be
+/// the product of the user's transforms, X_parent_joint Rot(axis, q) X_child_joint^-1.
+TEST(Joints, CanonicalFramesReproduceTheUserGeometry) {
+  const Vector3 axis1 = Vector3(0.3, -0.5, 0.8).normalized(), axis2 = Vector3(-0.7, 0.1, 0.2).normalized();
+  const Transform parent1(axis_angle_rotation(Vector3::UnitX(), 0.4), Vector3(0.1, 0.2, 0.3));
+  const Transform child1(axis_angle_rotation(Vector3::UnitY(), -0.3), Vector3(-0.2, 0.0, 0.5));
+  const Transform parent2(axis_angle_rotation(Vector3::UnitZ(), 1.1), Vector3(0.4, -0.3, 0.0));
+  const Transform child2(axis_angle_rotation(Vector3(1, 1, 0).normalized(), 0.6), Vector3(0.0, 0.3, -0.1));
+  const double q1 = 0.8, q2 = -0.35;
+  for (JointKind kind : {JointKind::revolute, JointKind::prismatic, JointKind::cylindrical}) {
+    ModelBuilder builder;
+    for (int b = 1; b <= 2; ++b) {
+      builder.add_body({"body" + std::to_string(b), Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
+      JointDefinition joint;
+      joint.name = "j" + std::to_string(b);
+      joint.kind = kind;
+      joint.axis = b == 1 ? axis1 : axis2;
+      joint.parent = b == 1 ? "ground" : "body1";
+      joint.child = "body" + std::to_string(b);
+      joint.X_parent_joint = b == 1 ? parent1 : parent2;
+      joint.X_child_joint = b == 1 ? child1 : child2;
+      builder.add_joint(joint);
+    }
+    const Model model = builder.build();
+    Data data(model);
+    VectorX q = model.neutral_configuration();
+    q[0] = q1;
+    q[model.joints[2].q_index] = q2;
+    update_positions(model, data, q);
+    auto motion = [&](const Vector3& axis, double value) {
+      if (kind == JointKind::prismatic) return Transform::from_translation(axis * value);
+      return Transform::from_rotation(axis_angle_rotation(axis, value));  // cylindrical: the rotation coordinate
+    };
+    const Transform body1 = parent1 * motion(axis1, q1) * child1.inverse();
+    const Transform body2 = body1 * parent2 * motion(axis2, q2) * child2.inverse();
+    EXPECT_TRUE((data.X_world_link[1] * model.links[1].X_link_body).is_approx(body1, 1e-14));
+    EXPECT_TRUE((data.X_world_link[2] * model.links[2].X_link_body).is_approx(body2, 1e-14));
+    // The user's joint frame, recovered from the link frame, carries the user's axis.
+    EXPECT_TRUE((model.joints[1].R_joint_link * Vector3::UnitZ()).isApprox(axis1, 1e-15));
   }
 }
 
@@ -93,6 +148,7 @@ TEST(Joints, VariantReportsSizesAndNames) {
   EXPECT_EQ(joint_nv(JointType{FreeJoint{}}), 6);
   EXPECT_EQ(joint_nv(JointType{FixedJoint{}}), 0);
   EXPECT_EQ(joint_type_name(JointType{UniversalJoint{}}), "universal");
+  EXPECT_EQ(joint_type_name(canonical_joint_type(JointKind::cylindrical)), "cylindrical");
   EXPECT_FALSE(joint_has_scalar_coordinates(JointType{SphericalJoint{}}));
 }
 

@@ -44,7 +44,7 @@ TEST(NoMalloc, KernelAlgorithmsDoNotAllocate) {
       articulated_body_forward_dynamics(model, data, tau, state.external_forces);
       composite_rigid_body_forward_dynamics(model, data, tau, state.external_forces);
       compute_joint_wrenches(model, data, state.external_forces);
-      joint_reaction(data, 5);
+      joint_reaction(model, data, 5);
     });
   }
 }

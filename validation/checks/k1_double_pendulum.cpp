@@ -29,7 +29,7 @@ std::vector<ValidationRow> check_k1_double_pendulum() {
     qdd_crba = std::max(qdd_crba, relative_error(composite_rigid_body_forward_dynamics(model, data, tau), reference.qdd));
     qdd_aba = std::max(qdd_aba, relative_error(articulated_body_forward_dynamics(model, data, tau), reference.qdd));
     compute_joint_wrenches(model, data);
-    const JointReaction r1 = joint_reaction(data, 1), r2 = joint_reaction(data, 2);
+    const JointReaction r1 = joint_reaction(model, data, 1), r2 = joint_reaction(model, data, 2);
     pin1 = std::max(pin1, relative_error(Eigen::Vector2d(r1.force_world.x(), r1.force_world.z()), reference.pin1_force) +
                               std::abs(r1.force_world.y()) / reference.pin1_force.norm());
     pin2 = std::max(pin2, relative_error(Eigen::Vector2d(r2.force_world.x(), r2.force_world.z()), reference.pin2_force) +

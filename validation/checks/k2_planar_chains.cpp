@@ -38,7 +38,7 @@ std::vector<ValidationRow> check_k2_planar_chains() {
       qdd_error = std::max(qdd_error, relative_error(absolute_from_relative(qdd), theta_ddot));
       compute_joint_wrenches(model, data);
       for (int i = 0; i < n; ++i) {
-        const Vector3 force = joint_reaction(data, i + 1).force_world;
+        const Vector3 force = joint_reaction(model, data, i + 1).force_world;
         const Vector3 expected(pin_force(0, i), 0.0, pin_force(1, i));
         reaction_error = std::max(reaction_error, relative_error(force, expected));
       }

@@ -41,7 +41,7 @@ RunErrors compare_run(const PendulumRun& run) {
     q_samples.push_back(system.configuration());
     qd_samples.push_back(system.velocity());
     Eigen::Matrix3Xd reactions(3, n);
-    for (int i = 0; i < n; ++i) reactions.col(i) = joint_reaction(system.data(), i + 1).force_world;
+    for (int i = 0; i < n; ++i) reactions.col(i) = joint_reaction(system.model(), system.data(), i + 1).force_world;
     reaction_samples.push_back(reactions);
     kinetic_samples.push_back(kinetic_energy(system.model(), system.data()));
     energy_samples.push_back(kinetic_samples.back() + gravity_potential_energy(system.model(), system.data()));

@@ -74,7 +74,7 @@ std::vector<ValidationRow> check_k6_algorithm_cross_checks() {
       // Reactions vs subtree Newton-Euler.
       compute_joint_wrenches(model, data, state.external_forces);
       for (int i = 1; i < model.num_links(); ++i) {
-        const JointReaction reaction = joint_reaction(data, i);
+        const JointReaction reaction = joint_reaction(model, data, i);
         const Vector6 expected = subtree_wrench(model, data, state.external_forces, i, data.X_world_link[i].translation());
         Vector6 kernel;
         kernel << reaction.moment_world, reaction.force_world;

@@ -15,7 +15,8 @@ Model planar_chain_model(const std::vector<oracle::PlanarLink>& links, double gr
                       std::nullopt});
     JointDefinition joint;
     joint.name = "pin" + std::to_string(i + 1);
-    joint.type = RevoluteJoint{Vector3::UnitY()};
+    joint.kind = JointKind::revolute;
+    joint.axis = Vector3::UnitY();
     joint.parent = i == 0 ? "ground" : "link" + std::to_string(i);
     joint.child = "link" + std::to_string(i + 1);
     joint.X_parent_joint = Transform::from_translation(Vector3(0.0, 0.0, i == 0 ? 0.0 : -links[i - 1].length));

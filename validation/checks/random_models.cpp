@@ -47,22 +47,16 @@ Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options) {
     joint.parent = parent < 0 ? "ground" : "body" + std::to_string(parent);
     joint.X_parent_joint = Transform(random_rotation(random), random_vector(random, 1.0));
     joint.X_child_joint = Transform(random_rotation(random), random_vector(random, 0.3));
-    const int kind = options.only_revolute ? 1 : b % 7;
-    switch (kind) {
-      case 0: joint.type = FixedJoint{}; break;
-      case 1: joint.type = RevoluteJoint{random_unit(random)}; break;
-      case 2: joint.type = PrismaticJoint{random_unit(random)}; break;
-      case 3: joint.type = CylindricalJoint{random_unit(random)}; break;
-      case 4: {
-        const Vector3 a1 = random_unit(random);
-        joint.type = UniversalJoint{a1, a1.unitOrthogonal()};
-        break;
-      }
-      case 5: joint.type = SphericalJoint{}; break;
-      default: joint.type = FreeJoint{}; break;
-    }
-    if (options.joint_springs && joint_has_scalar_coordinates(joint.type) && joint_nv(joint.type) > 0) {
-      const int nv = joint_nv(joint.type);
+    // Cycle through every kind; axial and universal joints get random (unit) axes.
+    static constexpr JointKind kinds[7] = {JointKind::fixed,     JointKind::revolute,  JointKind::prismatic,
+                                           JointKind::cylindrical, JointKind::universal, JointKind::spherical,
+                                           JointKind::free};
+    joint.kind = options.only_revolute ? JointKind::revolute : kinds[b % 7];
+    joint.axis = random_unit(random);
+    joint.second_axis = joint.axis.unitOrthogonal();
+    const JointType type = canonical_joint_type(joint.kind);
+    if (options.joint_springs && joint_has_scalar_coordinates(type) && joint_nv(type) > 0) {
+      const int nv = joint_nv(type);
       joint.spring = JointSpringDamper{JointVector::Constant(nv, uniform(random, 1.0, 10.0)),
                                        JointVector::Constant(nv, uniform(random, 0.1, 1.0)),
                                        JointVector::Constant(nv, uniform(random, -0.5, 0.5))};

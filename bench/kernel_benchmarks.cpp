@@ -1,0 +1,137 @@
+// Per-call cost of the kernel algorithms on the benchmark models (warm data, 1024
+// pre-drawn random states cycled, no allocation). Run: build/bench/heavesim_bench.
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <random>
+
+#include "bench/benchmark_models.hpp"
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/forward_dynamics.hpp"
+#include "kernel/algorithms/joint_reactions.hpp"
+
+namespace heavesim::bench {
+namespace {
+
+struct Workload {
+  explicit Workload(const BenchModel& bench) : model(to_heavesim(bench)), data(model) {
+    std::mt19937_64 random(1);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    const VectorX q0 = model.neutral_configuration();
+    for (int k = 0; k < 1024; ++k) {
+      VectorX displacement(model.nv), q(model.nq), v(model.nv), tau(model.nv);
+      for (int i = 0; i < model.nv; ++i) {
+        displacement[i] = uniform(random);
+        v[i] = uniform(random);
+        tau[i] = uniform(random);
+      }
+      integrate_configuration(model, q0, displacement, 1.0, q);
+      states_q.push_back(q);
+      states_v.push_back(v);
+      states_tau.push_back(tau);
+    }
+  }
+  Model model;
+  Data data;
+  std::vector<VectorX> states_q, states_v, states_tau;
+};
+
+BenchModel model_for(int index) {
+  switch (index) {
+    case 0: return double_pendulum();
+    case 1: return chain7();
+    case 2: return humanoid32();
+    default: return tree32_fixed();
+  }
+}
+
+template <class Operation>
+void run(benchmark::State& state, Operation operation) {
+  static std::vector<std::unique_ptr<Workload>> workloads(4);
+  const int index = static_cast<int>(state.range(0));
+  if (!workloads[index]) workloads[index] = std::make_unique<Workload>(model_for(index));
+  Workload& w = *workloads[index];
+  state.SetLabel(model_for(index).name + " nv=" + std::to_string(w.model.nv));
+  std::size_t k = 0;
+  for (auto _ : state) {
+    operation(w, k & 1023);
+    benchmark::ClobberMemory();
+    ++k;
+  }
+}
+
+void BM_PositionStage(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    update_positions(w.model, w.data, w.states_q[k]);
+    benchmark::DoNotOptimize(w.data.X_world_link.data());
+  });
+}
+void BM_VelocityStage(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    if (k == 0) update_positions(w.model, w.data, w.states_q[0]);
+    update_velocities(w.model, w.data, w.states_q[0], w.states_v[k]);
+    benchmark::DoNotOptimize(w.data.velocity_world.data());
+  });
+}
+void BM_InverseDynamicsPass(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    if (k == 0) {
+      update_positions(w.model, w.data, w.states_q[0]);
+      update_velocities(w.model, w.data, w.states_q[0], w.states_v[0]);
+    }
+    benchmark::DoNotOptimize(inverse_dynamics(w.model, w.data, w.states_tau[k]));
+  });
+}
+
+void BM_RNEA(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    benchmark::DoNotOptimize(rnea(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]));
+  });
+}
+void BM_CRBA(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) { benchmark::DoNotOptimize(crba(w.model, w.data, w.states_q[k])); });
+}
+void BM_ABA(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    benchmark::DoNotOptimize(aba(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]));
+  });
+}
+void BM_ForwardDynamicsCRBA(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    update_positions(w.model, w.data, w.states_q[k]);
+    update_velocities(w.model, w.data, w.states_q[k], w.states_v[k]);
+    benchmark::DoNotOptimize(composite_rigid_body_forward_dynamics(w.model, w.data, w.states_tau[k]));
+  });
+}
+/// The reaction pass alone, after forward dynamics.
+void BM_Reactions(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    if (k == 0) aba(w.model, w.data, w.states_q[0], w.states_v[0], w.states_tau[0]);
+    compute_joint_wrenches(w.model, w.data);
+    benchmark::DoNotOptimize(w.data.joint_wrench_world.data());
+  });
+}
+/// A full evaluation as a recorded sample needs it: ABA then every joint reaction.
+void BM_ABAWithReactions(benchmark::State& state) {
+  run(state, [](Workload& w, std::size_t k) {
+    aba(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]);
+    compute_joint_wrenches(w.model, w.data);
+    benchmark::DoNotOptimize(w.data.joint_wrench_world.data());
+  });
+}
+
+#define HEAVESIM_MODELS ->Arg(0)->Arg(1)->Arg(2)->Arg(3)
+BENCHMARK(BM_PositionStage) HEAVESIM_MODELS;
+BENCHMARK(BM_VelocityStage) HEAVESIM_MODELS;
+BENCHMARK(BM_InverseDynamicsPass) HEAVESIM_MODELS;
+BENCHMARK(BM_RNEA) HEAVESIM_MODELS;
+BENCHMARK(BM_CRBA) HEAVESIM_MODELS;
+BENCHMARK(BM_ABA) HEAVESIM_MODELS;
+BENCHMARK(BM_ForwardDynamicsCRBA) HEAVESIM_MODELS;
+BENCHMARK(BM_Reactions) HEAVESIM_MODELS;
+BENCHMARK(BM_ABAWithReactions) HEAVESIM_MODELS;
+
+}  // namespace
+}  // namespace heavesim::bench
+
+BENCHMARK_MAIN();
