@@ -20,14 +20,16 @@ int main(int argc, char** argv) {
   run->add_option("case", run_options.case_path, "case file (YAML)")->required();
   run->add_option("-o,--output", run_options.output_path, "result file (default results/<case name>.h5)");
   run->add_option("--csv", run_options.csv_directory, "also write <case name>.csv into this directory");
-  run->add_option("--set", run_options.overrides, "override a case value: key.path=value (repeatable)");
+  run->add_option("--set", run_options.overrides, "override a case value: key.path=value (repeatable)")
+      ->allow_extra_args(false);
   run->add_flag("-q,--quiet", run_options.quiet, "no progress line and no summary");
 
   std::string check_path;
   std::vector<std::string> check_overrides;
   CLI::App* check = app.add_subcommand("check", "load and check a case without running it; print the model");
   check->add_option("case", check_path, "case file (YAML)")->required();
-  check->add_option("--set", check_overrides, "override a case value: key.path=value (repeatable)");
+  check->add_option("--set", check_overrides, "override a case value: key.path=value (repeatable)")
+      ->allow_extra_args(false);
 
   std::vector<std::string> validation_names;
   bool list_only = false;

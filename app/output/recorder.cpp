@@ -41,6 +41,17 @@ std::string speed_units(const JointType& type, const std::string& per) {
 Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
     : scene_(scene), file_(file), csv_(csv) {
   define_channels(definition);
+  if (file_) {
+    // HDF5 lists groups alphabetically; keep the model's (topological) order too.
+    const Model& model = *scene_.model;
+    std::string bodies, joints;
+    for (int i = 1; i < model.num_links(); ++i) {
+      bodies += (i > 1 ? "," : "") + model.links[i].name;
+      joints += (i > 1 ? "," : "") + model.joints[i].name;
+    }
+    if (definition.output.bodies) file_->set_attribute("/bodies", "order", bodies);
+    if (definition.output.joints || definition.output.reactions) file_->set_attribute("/joints", "order", joints);
+  }
   if (csv_) {
     std::vector<std::string> header;
     for (const Channel& channel : channels_)

@@ -2,7 +2,7 @@
 
 namespace heavesim {
 
-Data::Data(const Model& model) {
+Data::Data(const Model& model) : mass_matrix_cholesky(model.nv) {
   const int n = model.num_links();
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
@@ -18,7 +18,6 @@ Data::Data(const Model& model) {
   tau = VectorX::Zero(model.nv);
   composite_inertia_world.assign(n, Matrix6::Zero());
   mass_matrix = MatrixX::Zero(model.nv, model.nv);
-  mass_matrix_cholesky = Eigen::LLT<MatrixX>(model.nv);
   articulated_inertia_world.assign(n, Matrix6::Zero());
   articulated_bias_world.assign(n, Force::Zero());
   aba_U = Matrix6X::Zero(6, model.nv);
