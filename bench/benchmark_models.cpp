@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 
 #include <functional>
+#include <random>
 
+#include "kernel/algorithms/configuration.hpp"
 #include "kernel/model/model_builder.hpp"
 
 namespace heavesim::bench {
@@ -86,6 +88,22 @@ Model to_heavesim(const BenchModel& bench) {
     builder.add_joint(joint);
   }
   return builder.build();
+}
+
+BenchStates random_states(const Model& model, int count, unsigned seed) {
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  auto draw = [&](int size) { return VectorX(VectorX::NullaryExpr(size, [&](Eigen::Index) { return uniform(random); })); };
+  const VectorX q0 = model.neutral_configuration();
+  BenchStates states;
+  for (int k = 0; k < count; ++k) {
+    VectorX q(model.nq);
+    integrate_configuration(model, q0, draw(model.nv), 1.0, q);
+    states.q.push_back(q);
+    states.v.push_back(draw(model.nv));
+    states.tau.push_back(draw(model.nv));
+  }
+  return states;
 }
 
 std::string to_mjcf(const BenchModel& bench) {

@@ -36,6 +36,13 @@ BenchModel humanoid32();
 BenchModel tree32_fixed();
 
 Model to_heavesim(const BenchModel& model);
+
+/// `count` random states of `model`: q (a random displacement from neutral, unit
+/// quaternions), v and tau with entries in [-1, 1]; deterministic for a seed.
+struct BenchStates {
+  std::vector<VectorX> q, v, tau;
+};
+BenchStates random_states(const Model& model, int count, unsigned seed);
 /// MJCF text for MuJoCo.
 std::string to_mjcf(const BenchModel& model);
 

@@ -6,7 +6,6 @@
 #include <random>
 
 #include "bench/benchmark_models.hpp"
-#include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 
@@ -14,26 +13,11 @@ namespace heavesim::bench {
 namespace {
 
 struct Workload {
-  explicit Workload(const BenchModel& bench) : model(to_heavesim(bench)), data(model) {
-    std::mt19937_64 random(1);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    const VectorX q0 = model.neutral_configuration();
-    for (int k = 0; k < 1024; ++k) {
-      VectorX displacement(model.nv), q(model.nq), v(model.nv), tau(model.nv);
-      for (int i = 0; i < model.nv; ++i) {
-        displacement[i] = uniform(random);
-        v[i] = uniform(random);
-        tau[i] = uniform(random);
-      }
-      integrate_configuration(model, q0, displacement, 1.0, q);
-      states_q.push_back(q);
-      states_v.push_back(v);
-      states_tau.push_back(tau);
-    }
-  }
+  explicit Workload(const BenchModel& bench)
+      : model(to_heavesim(bench)), data(model), states(random_states(model, 1024, 1)) {}
   Model model;
   Data data;
-  std::vector<VectorX> states_q, states_v, states_tau;
+  BenchStates states;
 };
 
 BenchModel model_for(int index) {
@@ -62,51 +46,51 @@ void run(benchmark::State& state, Operation operation) {
 
 void BM_PositionStage(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    update_positions(w.model, w.data, w.states_q[k]);
+    update_positions(w.model, w.data, w.states.q[k]);
     benchmark::DoNotOptimize(w.data.X_world_link.data());
   });
 }
 void BM_VelocityStage(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    if (k == 0) update_positions(w.model, w.data, w.states_q[0]);
-    update_velocities(w.model, w.data, w.states_q[0], w.states_v[k]);
+    if (k == 0) update_positions(w.model, w.data, w.states.q[0]);
+    update_velocities(w.model, w.data, w.states.q[0], w.states.v[k]);
     benchmark::DoNotOptimize(w.data.velocity_world.data());
   });
 }
 void BM_InverseDynamicsPass(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
     if (k == 0) {
-      update_positions(w.model, w.data, w.states_q[0]);
-      update_velocities(w.model, w.data, w.states_q[0], w.states_v[0]);
+      update_positions(w.model, w.data, w.states.q[0]);
+      update_velocities(w.model, w.data, w.states.q[0], w.states.v[0]);
     }
-    benchmark::DoNotOptimize(inverse_dynamics(w.model, w.data, w.states_tau[k]));
+    benchmark::DoNotOptimize(inverse_dynamics(w.model, w.data, w.states.tau[k]));
   });
 }
 
 void BM_RNEA(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    benchmark::DoNotOptimize(rnea(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]));
+    benchmark::DoNotOptimize(rnea(w.model, w.data, w.states.q[k], w.states.v[k], w.states.tau[k]));
   });
 }
 void BM_CRBA(benchmark::State& state) {
-  run(state, [](Workload& w, std::size_t k) { benchmark::DoNotOptimize(crba(w.model, w.data, w.states_q[k])); });
+  run(state, [](Workload& w, std::size_t k) { benchmark::DoNotOptimize(crba(w.model, w.data, w.states.q[k])); });
 }
 void BM_ABA(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    benchmark::DoNotOptimize(aba(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]));
+    benchmark::DoNotOptimize(aba(w.model, w.data, w.states.q[k], w.states.v[k], w.states.tau[k]));
   });
 }
 void BM_ForwardDynamicsCRBA(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    update_positions(w.model, w.data, w.states_q[k]);
-    update_velocities(w.model, w.data, w.states_q[k], w.states_v[k]);
-    benchmark::DoNotOptimize(composite_rigid_body_forward_dynamics(w.model, w.data, w.states_tau[k]));
+    update_positions(w.model, w.data, w.states.q[k]);
+    update_velocities(w.model, w.data, w.states.q[k], w.states.v[k]);
+    benchmark::DoNotOptimize(composite_rigid_body_forward_dynamics(w.model, w.data, w.states.tau[k]));
   });
 }
 /// The reaction pass alone, after forward dynamics.
 void BM_Reactions(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    if (k == 0) aba(w.model, w.data, w.states_q[0], w.states_v[0], w.states_tau[0]);
+    if (k == 0) aba(w.model, w.data, w.states.q[0], w.states.v[0], w.states.tau[0]);
     compute_joint_wrenches(w.model, w.data);
     benchmark::DoNotOptimize(w.data.joint_wrench_world.data());
   });
@@ -114,7 +98,7 @@ void BM_Reactions(benchmark::State& state) {
 /// A full evaluation as a recorded sample needs it: ABA then every joint reaction.
 void BM_ABAWithReactions(benchmark::State& state) {
   run(state, [](Workload& w, std::size_t k) {
-    aba(w.model, w.data, w.states_q[k], w.states_v[k], w.states_tau[k]);
+    aba(w.model, w.data, w.states.q[k], w.states.v[k], w.states.tau[k]);
     compute_joint_wrenches(w.model, w.data);
     benchmark::DoNotOptimize(w.data.joint_wrench_world.data());
   });

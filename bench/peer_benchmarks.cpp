@@ -15,7 +15,6 @@
 #include <random>
 
 #include "bench/benchmark_models.hpp"
-#include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 
@@ -30,15 +29,13 @@ BenchModel model_for(int index) {
   }
 }
 
-// ------------------------------------------------------------------ MuJoCo
 struct MujocoModel {
   explicit MujocoModel(const BenchModel& bench) {
     mjVFS vfs;
     mj_defaultVFS(&vfs);
     const std::string xml = to_mjcf(bench);
     mj_makeEmptyFileVFS(&vfs, "model.xml", static_cast<int>(xml.size()));
-    const int file = mj_findFileVFS(&vfs, "model.xml");
-    std::memcpy(vfs.filedata[file], xml.data(), xml.size());
+    std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, "model.xml")], xml.data(), xml.size());
     char error[1000] = "";
     model = mj_loadXML("model.xml", &vfs, error, sizeof error);
     mj_deleteVFS(&vfs);
@@ -49,17 +46,23 @@ struct MujocoModel {
     mj_deleteData(data);
     mj_deleteModel(model);
   }
+  /// Writes state k into qpos, qvel, qfrc_applied (= tau) and qacc (= tau, for mj_inverse).
+  void set(const BenchStates& states, std::size_t k) const {
+    for (int j = 0; j < model->nq; ++j) data->qpos[j] = states.q[k][j];
+    for (int j = 0; j < model->nv; ++j) {
+      data->qvel[j] = states.v[k][j];
+      data->qfrc_applied[j] = data->qacc[j] = states.tau[k][j];
+    }
+  }
   mjModel* model = nullptr;
   mjData* data = nullptr;
 };
 
-// ------------------------------------------------------------------ DART
 dart::dynamics::SkeletonPtr to_dart(const BenchModel& bench) {
   namespace dd = dart::dynamics;
   dd::SkeletonPtr skeleton = dd::Skeleton::create(bench.name);
   std::vector<dd::BodyNode*> nodes;
-  for (std::size_t i = 0; i < bench.links.size(); ++i) {
-    const BenchLink& link = bench.links[i];
+  for (const BenchLink& link : bench.links) {
     dd::BodyNode* parent = link.parent < 0 ? nullptr : nodes[link.parent];
     Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
     offset.translation() = link.offset;
@@ -81,29 +84,8 @@ dart::dynamics::SkeletonPtr to_dart(const BenchModel& bench) {
   return skeleton;
 }
 
-// ------------------------------------------------------------------ shared states
-struct States {
-  States(int nq, int nv, const Model& model) {
-    std::mt19937_64 random(2);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    const VectorX q0 = model.neutral_configuration();
-    for (int k = 0; k < 1024; ++k) {
-      VectorX d(nv), q(nq), v(nv), tau(nv);
-      for (int i = 0; i < nv; ++i) {
-        d[i] = uniform(random);
-        v[i] = uniform(random);
-        tau[i] = uniform(random);
-      }
-      integrate_configuration(model, q0, d, 1.0, q);
-      qs.push_back(q);
-      vs.push_back(v);
-      taus.push_back(tau);
-    }
-  }
-  std::vector<VectorX> qs, vs, taus;
-};
-
-/// Max relative qdd difference of MuJoCo and DART against heavesim (revolute models only).
+/// Max relative qdd difference of MuJoCo and DART against heavesim (revolute models:
+/// all three use the same coordinates).
 void agreement_context() {
   for (int index : {0, 1}) {
     const BenchModel bench = model_for(index);
@@ -111,19 +93,15 @@ void agreement_context() {
     Data data(model);
     MujocoModel mujoco(bench);
     auto dart = to_dart(bench);
-    const States states(model.nq, model.nv, model);
+    const BenchStates states = random_states(model, 100, 2);
     double mujoco_error = 0.0, dart_error = 0.0;
-    for (int k = 0; k < 100; ++k) {
-      const VectorX qdd = aba(model, data, states.qs[k], states.vs[k], states.taus[k]);
-      for (int i = 0; i < model.nv; ++i) {
-        mujoco.data->qpos[i] = states.qs[k][i];
-        mujoco.data->qvel[i] = states.vs[k][i];
-        mujoco.data->qfrc_applied[i] = states.taus[k][i];
-      }
+    for (std::size_t k = 0; k < states.q.size(); ++k) {
+      const VectorX qdd = aba(model, data, states.q[k], states.v[k], states.tau[k]);
+      mujoco.set(states, k);
       mj_forward(mujoco.model, mujoco.data);
-      dart->setPositions(states.qs[k]);
-      dart->setVelocities(states.vs[k]);
-      dart->setForces(states.taus[k]);
+      dart->setPositions(states.q[k]);
+      dart->setVelocities(states.v[k]);
+      dart->setForces(states.tau[k]);
       dart->computeForwardDynamics();
       mujoco_error = std::max(mujoco_error, (Eigen::Map<VectorX>(mujoco.data->qacc, model.nv) - qdd).norm() / qdd.norm());
       dart_error = std::max(dart_error, (dart->getAccelerations() - qdd).norm() / qdd.norm());
@@ -134,147 +112,115 @@ void agreement_context() {
   }
 }
 
-// ------------------------------------------------------------------ benchmarks
-void BM_heavesim_ABA(benchmark::State& state) {
+/// Times `operation(k)` over 1024 random states of the selected model. For a free
+/// base the states are in heavesim's coordinates; peers only time them.
+template <class Setup>
+void timed(benchmark::State& state, const std::string& what, Setup setup) {
   const BenchModel bench = model_for(static_cast<int>(state.range(0)));
   const Model model = to_heavesim(bench);
-  Data data(model);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name);
+  const BenchStates states = random_states(model, 1024, 1);
+  auto operation = setup(bench, model, states);
+  state.SetLabel(bench.name + " (" + what + ")");
   std::size_t k = 0;
-  for (auto _ : state) {
-    const std::size_t i = k++ & 1023;
-    benchmark::DoNotOptimize(aba(model, data, states.qs[i], states.vs[i], states.taus[i]));
-  }
+  for (auto _ : state) operation(k++ & 1023);
+}
+
+void BM_heavesim_ABA(benchmark::State& state) {
+  timed(state, "aba", [](const BenchModel&, const Model& model, const BenchStates& states) {
+    return [&model, &states, data = std::make_shared<Data>(model)](std::size_t k) {
+      benchmark::DoNotOptimize(aba(model, *data, states.q[k], states.v[k], states.tau[k]));
+    };
+  });
 }
 
 void BM_heavesim_ABA_and_reactions(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  const Model model = to_heavesim(bench);
-  Data data(model);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name);
-  std::size_t k = 0;
-  for (auto _ : state) {
-    const std::size_t i = k++ & 1023;
-    aba(model, data, states.qs[i], states.vs[i], states.taus[i]);
-    compute_joint_wrenches(model, data);
-    benchmark::DoNotOptimize(data.joint_wrench_world.data());
-  }
+  timed(state, "aba + compute_joint_wrenches", [](const BenchModel&, const Model& model, const BenchStates& states) {
+    return [&model, &states, data = std::make_shared<Data>(model)](std::size_t k) {
+      aba(model, *data, states.q[k], states.v[k], states.tau[k]);
+      compute_joint_wrenches(model, *data);
+      benchmark::DoNotOptimize(data->joint_wrench_world.data());
+    };
+  });
 }
 
 void BM_heavesim_RNEA(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  const Model model = to_heavesim(bench);
-  Data data(model);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name);
-  std::size_t k = 0;
-  for (auto _ : state) {
-    const std::size_t i = k++ & 1023;
-    benchmark::DoNotOptimize(rnea(model, data, states.qs[i], states.vs[i], states.taus[i]));
-  }
-}
-
-void mujoco_set(const MujocoModel& mujoco, const States& states, std::size_t i) {
-  for (int j = 0; j < mujoco.model->nq; ++j) mujoco.data->qpos[j] = states.qs[i][j];
-  for (int j = 0; j < mujoco.model->nv; ++j) {
-    mujoco.data->qvel[j] = states.vs[i][j];
-    mujoco.data->qfrc_applied[j] = states.taus[i][j];
-    mujoco.data->qacc[j] = states.taus[i][j];
-  }
+  timed(state, "rnea", [](const BenchModel&, const Model& model, const BenchStates& states) {
+    return [&model, &states, data = std::make_shared<Data>(model)](std::size_t k) {
+      benchmark::DoNotOptimize(rnea(model, *data, states.q[k], states.v[k], states.tau[k]));
+    };
+  });
 }
 
 void BM_mujoco_forward(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  MujocoModel mujoco(bench);
-  const Model model = to_heavesim(bench);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name + " (mj_forward, full pipeline)");
-  std::size_t k = 0;
-  for (auto _ : state) {
-    mujoco_set(mujoco, states, k++ & 1023);
-    mj_forward(mujoco.model, mujoco.data);
-    benchmark::DoNotOptimize(mujoco.data->qacc);
-  }
+  timed(state, "mj_forward, full pipeline", [](const BenchModel& bench, const Model&, const BenchStates& states) {
+    return [&states, mujoco = std::make_shared<MujocoModel>(bench)](std::size_t k) {
+      mujoco->set(states, k);
+      mj_forward(mujoco->model, mujoco->data);
+      benchmark::DoNotOptimize(mujoco->data->qacc);
+    };
+  });
 }
 
 void BM_mujoco_forward_and_reactions(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  MujocoModel mujoco(bench);
-  const Model model = to_heavesim(bench);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name + " (mj_forward + mj_rnePostConstraint)");
-  std::size_t k = 0;
-  for (auto _ : state) {
-    mujoco_set(mujoco, states, k++ & 1023);
-    mj_forward(mujoco.model, mujoco.data);
-    mj_rnePostConstraint(mujoco.model, mujoco.data);
-    benchmark::DoNotOptimize(mujoco.data->cfrc_int);
-  }
+  timed(state, "mj_forward + mj_rnePostConstraint", [](const BenchModel& bench, const Model&, const BenchStates& states) {
+    return [&states, mujoco = std::make_shared<MujocoModel>(bench)](std::size_t k) {
+      mujoco->set(states, k);
+      mj_forward(mujoco->model, mujoco->data);
+      mj_rnePostConstraint(mujoco->model, mujoco->data);
+      benchmark::DoNotOptimize(mujoco->data->cfrc_int);
+    };
+  });
 }
 
 void BM_mujoco_inverse(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  MujocoModel mujoco(bench);
-  const Model model = to_heavesim(bench);
-  const States states(model.nq, model.nv, model);
-  state.SetLabel(bench.name + " (mj_inverse)");
-  std::size_t k = 0;
-  for (auto _ : state) {
-    mujoco_set(mujoco, states, k++ & 1023);
-    mj_inverse(mujoco.model, mujoco.data);
-    benchmark::DoNotOptimize(mujoco.data->qfrc_inverse);
+  timed(state, "mj_inverse", [](const BenchModel& bench, const Model&, const BenchStates& states) {
+    return [&states, mujoco = std::make_shared<MujocoModel>(bench)](std::size_t k) {
+      mujoco->set(states, k);
+      mj_inverse(mujoco->model, mujoco->data);
+      benchmark::DoNotOptimize(mujoco->data->qfrc_inverse);
+    };
+  });
+}
+
+/// DART's free joint uses its own coordinates (exponential map), so it gets states of
+/// its own size drawn the same way.
+BenchStates dart_states(const dart::dynamics::SkeletonPtr& skeleton) {
+  const int n = static_cast<int>(skeleton->getNumDofs());
+  BenchStates states;
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  for (int k = 0; k < 1024; ++k) {
+    states.q.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
+    states.v.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
+    states.tau.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
   }
+  return states;
 }
 
 void BM_dart_forward(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  auto dart = to_dart(bench);
-  const States states(static_cast<int>(dart->getNumDofs()), static_cast<int>(dart->getNumDofs()), to_heavesim(double_pendulum()));
-  std::mt19937_64 random(3);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  std::vector<VectorX> qs, vs, taus;
-  for (int k = 0; k < 1024; ++k) {
-    const int n = static_cast<int>(dart->getNumDofs());
-    qs.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-    vs.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-    taus.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-  }
-  state.SetLabel(bench.name + " (set q, v, tau + computeForwardDynamics)");
-  std::size_t k = 0;
-  for (auto _ : state) {
-    const std::size_t i = k++ & 1023;
-    dart->setPositions(qs[i]);
-    dart->setVelocities(vs[i]);
-    dart->setForces(taus[i]);
-    dart->computeForwardDynamics();
-    benchmark::DoNotOptimize(dart->getAccelerations().data());
-  }
+  timed(state, "set q, v, tau + computeForwardDynamics", [](const BenchModel& bench, const Model&, const BenchStates&) {
+    auto dart = to_dart(bench);
+    return [dart, states = dart_states(dart)](std::size_t k) {
+      dart->setPositions(states.q[k]);
+      dart->setVelocities(states.v[k]);
+      dart->setForces(states.tau[k]);
+      dart->computeForwardDynamics();
+      benchmark::DoNotOptimize(dart->getAccelerations().data());
+    };
+  });
 }
 
 void BM_dart_inverse(benchmark::State& state) {
-  const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  auto dart = to_dart(bench);
-  std::mt19937_64 random(4);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  const int n = static_cast<int>(dart->getNumDofs());
-  std::vector<VectorX> qs, vs, as;
-  for (int k = 0; k < 1024; ++k) {
-    qs.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-    vs.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-    as.push_back(VectorX::NullaryExpr(n, [&](Eigen::Index) { return uniform(random); }));
-  }
-  state.SetLabel(bench.name + " (set q, v, qdd + computeInverseDynamics)");
-  std::size_t k = 0;
-  for (auto _ : state) {
-    const std::size_t i = k++ & 1023;
-    dart->setPositions(qs[i]);
-    dart->setVelocities(vs[i]);
-    dart->setAccelerations(as[i]);
-    dart->computeInverseDynamics();
-    benchmark::DoNotOptimize(dart->getForces().data());
-  }
+  timed(state, "set q, v, qdd + computeInverseDynamics", [](const BenchModel& bench, const Model&, const BenchStates&) {
+    auto dart = to_dart(bench);
+    return [dart, states = dart_states(dart)](std::size_t k) {
+      dart->setPositions(states.q[k]);
+      dart->setVelocities(states.v[k]);
+      dart->setAccelerations(states.tau[k]);
+      dart->computeInverseDynamics();
+      benchmark::DoNotOptimize(dart->getForces().data());
+    };
+  });
 }
 
 #define PEER_MODELS ->Arg(0)->Arg(1)->Arg(2)

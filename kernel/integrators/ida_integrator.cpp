@@ -22,20 +22,10 @@ void IdaIntegrator::release() {
 
 int IdaIntegrator::residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
   auto* self = static_cast<IdaIntegrator*>(user_data);
-  try {
-    self->work_y_ = sundials::map(y);
-    self->system_->derivative(t, self->work_y_, self->work_f_);
-    sundials::map(r) = sundials::map(yp) - self->work_f_;
-    return 0;
-  } catch (const NumericalError&) {
-    // Recoverable: IDA retries with a smaller step; if it keeps failing the last
-    // error is reported.
-    self->callback_error_.exception = std::current_exception();
-    return 1;
-  } catch (...) {
-    self->callback_error_.exception = std::current_exception();
-    return -1;
-  }
+  const int flag =
+      sundials::evaluate_derivative(*self->system_, t, y, self->work_y_, self->work_f_, self->callback_error_);
+  if (flag == 0) sundials::map(r) = sundials::map(yp) - self->work_f_;
+  return flag;
 }
 
 void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {

@@ -5,7 +5,7 @@
 
 #include <exception>
 
-#include "kernel/spatial/types.hpp"
+#include "kernel/system/ode_system.hpp"
 
 namespace heavesim::sundials {
 
@@ -38,5 +38,24 @@ struct CallbackError {
     }
   }
 };
+
+/// Evaluates f(t, y) into `derivative` for a SUNDIALS callback, so that exceptions
+/// never cross into C. A NumericalError is recoverable (return 1: the integrator
+/// retries with a smaller step, and the error is rethrown if it keeps failing);
+/// anything else is fatal (return -1).
+inline int evaluate_derivative(OdeSystem& system, double t, N_Vector y, VectorX& state, VectorX& derivative,
+                               CallbackError& error) {
+  try {
+    state = map(y);
+    system.derivative(t, state, derivative);
+    return 0;
+  } catch (const NumericalError&) {
+    error.exception = std::current_exception();
+    return 1;
+  } catch (...) {
+    error.exception = std::current_exception();
+    return -1;
+  }
+}
 
 }  // namespace heavesim::sundials

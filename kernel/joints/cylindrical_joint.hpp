@@ -5,8 +5,7 @@ namespace heavesim {
 
 /// Rotation q[0] [rad] about and translation q[1] [m] along the joint frame's z axis.
 /// S = [[e_z, 0]; [0, e_z]] (z is invariant under the joint's own motion), c_J = 0.
-struct CylindricalJoint {
-  static constexpr int nq = 2, nv = 2;
+struct CylindricalJoint : PlainCoordinates<2> {
   static constexpr const char* type_name = "cylindrical";
   static constexpr bool has_bias_acceleration = false;
 
@@ -31,20 +30,6 @@ struct CylindricalJoint {
     map3(S + 6) = Vector3::Zero();
     map3(S + 9) = axis;
   }
-  void configuration_derivative(const double*, const double* v, double* qdot) const {
-    qdot[0] = v[0];
-    qdot[1] = v[1];
-  }
-  void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    q_out[0] = q[0] + v[0] * dt;
-    q_out[1] = q[1] + v[1] * dt;
-  }
-  void difference(const double* q0, const double* q1, double* dv) const {
-    dv[0] = q1[0] - q0[0];
-    dv[1] = q1[1] - q0[1];
-  }
-  void neutral(double* q) const { q[0] = q[1] = 0.0; }
-  void normalize(double*) const {}
 };
 
 }  // namespace heavesim

@@ -5,8 +5,7 @@ namespace heavesim {
 
 /// Rigid connection (0 DoF). Kept as its own link so that its reaction (e.g. the hook
 /// load between top drive and drill string) can be reported.
-struct FixedJoint {
-  static constexpr int nq = 0, nv = 0;
+struct FixedJoint : PlainCoordinates<0> {
   static constexpr const char* type_name = "fixed";
   static constexpr bool has_bias_acceleration = false;
 
@@ -17,11 +16,6 @@ struct FixedJoint {
     X_world_link = X_world_joint;
   }
   void world_motion_subspace(const Transform&, const double*, double*) const {}
-  void configuration_derivative(const double*, const double*, double*) const {}
-  void integrate(const double*, const double*, double, double*) const {}
-  void difference(const double*, const double*, double*) const {}
-  void neutral(double*) const {}
-  void normalize(double*) const {}
 };
 
 }  // namespace heavesim

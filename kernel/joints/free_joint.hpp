@@ -14,8 +14,7 @@ struct FreeJoint {
   static constexpr bool has_bias_acceleration = false;
 
   Transform transform(const double* q) const {
-    return Transform(quaternion_from_wxyz(map4(q + 3)).toRotationMatrix(),
-                     map3(q));
+    return Transform(quaternion_from_wxyz(map4(q + 3)).toRotationMatrix(), map3(q));
   }
   MotionSubspace<6> motion_subspace(const double*) const { return MotionSubspace<6>::Identity(); }
   Motion bias_acceleration(const double*, const double*) const { return Motion::Zero(); }
@@ -26,28 +25,18 @@ struct FreeJoint {
     act_on_subspace<nv>(X_world_link, motion_subspace(q), S);
   }
   void configuration_derivative(const double* q, const double* v, double* qdot) const {
-    const Eigen::Quaterniond orientation = quaternion_from_wxyz(map4(q + 3));
-    map3(qdot) = orientation * map3(v + 3);
-    quaternion_derivative(map4(q + 3), map3(v),
-                          map4(qdot + 3));
+    map3(qdot) = quaternion_from_wxyz(map4(q + 3)) * map3(v + 3);
+    quaternion_derivative(map4(q + 3), map3(v), map4(qdot + 3));
   }
   /// Retraction on R^3 x SO(3): the position moves with the start orientation's axes,
   /// the orientation by q (x) exp(w dt / 2).
   void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    const Eigen::Quaterniond q0 = quaternion_from_wxyz(map4(q + 3));
-    map3(q_out) = map3(q) + q0 * (map3(v + 3) * dt);
-    const Vector3 rotation = map3(v) * dt;
-    const double angle = rotation.norm();
-    const Eigen::Quaterniond dq =
-        angle > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, rotation / angle))
-                    : Eigen::Quaterniond::Identity();
-    write_wxyz((q0 * dq).normalized(), map4(q_out + 3));
+    map3(q_out) = map3(q) + quaternion_from_wxyz(map4(q + 3)) * (map3(v + 3) * dt);
+    integrate_quaternion(q + 3, map3(v), dt, q_out + 3);
   }
   void difference(const double* q0, const double* q1, double* dv) const {
-    const Eigen::Quaterniond a = quaternion_from_wxyz(map4(q0 + 3));
-    const Eigen::Quaterniond b = quaternion_from_wxyz(map4(q1 + 3));
-    map3(dv) = rotation_vector(a.conjugate() * b);
-    map3(dv + 3) = a.conjugate() * (map3(q1) - map3(q0));
+    map3(dv) = quaternion_difference(q0 + 3, q1 + 3);
+    map3(dv + 3) = quaternion_from_wxyz(map4(q0 + 3)).conjugate() * (map3(q1) - map3(q0));
   }
   void neutral(double* q) const {
     q[0] = q[1] = q[2] = 0.0;

@@ -39,6 +39,42 @@ inline Eigen::Map<const Vector3> map3(const double* p) { return Eigen::Map<const
 inline Eigen::Map<Eigen::Vector4d> map4(double* p) { return Eigen::Map<Eigen::Vector4d>(p); }
 inline Eigen::Map<const Eigen::Vector4d> map4(const double* p) { return Eigen::Map<const Eigen::Vector4d>(p); }
 
+/// The configuration maps of a joint whose N coordinates are plain numbers (angles,
+/// displacements): qdot = v, integrate is q + v dt.
+template <int N>
+struct PlainCoordinates {
+  static constexpr int nq = N, nv = N;
+  void configuration_derivative(const double*, const double* v, double* qdot) const {
+    for (int k = 0; k < N; ++k) qdot[k] = v[k];
+  }
+  void integrate(const double* q, const double* v, double dt, double* q_out) const {
+    for (int k = 0; k < N; ++k) q_out[k] = q[k] + v[k] * dt;
+  }
+  void difference(const double* q0, const double* q1, double* dv) const {
+    for (int k = 0; k < N; ++k) dv[k] = q1[k] - q0[k];
+  }
+  void neutral(double* q) const {
+    for (int k = 0; k < N; ++k) q[k] = 0.0;
+  }
+  void normalize(double*) const {}
+};
+
+/// q_out = q (x) exp(omega dt / 2) for unit quaternions (w, x, y, z): exact for a
+/// constant angular velocity omega [rad/s] given in the rotated (body) frame.
+inline void integrate_quaternion(const double* q, const Vector3& omega, double dt, double* q_out) {
+  const Eigen::Quaterniond q0 = quaternion_from_wxyz(map4(q));
+  const Vector3 rotation = omega * dt;
+  const double angle = rotation.norm();
+  const Eigen::Quaterniond dq = angle > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, rotation / angle))
+                                            : Eigen::Quaterniond::Identity();
+  write_wxyz((q0 * dq).normalized(), map4(q_out));
+}
+
+/// The rotation vector taking unit quaternion q0 to q1, in q0's frame.
+inline Vector3 quaternion_difference(const double* q0, const double* q1) {
+  return rotation_vector(quaternion_from_wxyz(map4(q0)).conjugate() * quaternion_from_wxyz(map4(q1)));
+}
+
 /// X_out = X * Rz(angle), computed on the two columns Rz changes.
 HEAVESIM_INLINE void rotate_about_z(const Transform& X, double angle, Transform& X_out) {
   const double c = std::cos(angle), s = std::sin(angle);

@@ -5,8 +5,7 @@ namespace heavesim {
 
 /// Translation by q [m] along the joint frame's z axis; v = dq/dt [m/s].
 /// S = [0; e_z], c_J = 0; in the world S = [0; R e_z].
-struct PrismaticJoint {
-  static constexpr int nq = 1, nv = 1;
+struct PrismaticJoint : PlainCoordinates<1> {
   static constexpr const char* type_name = "prismatic";
   static constexpr bool has_bias_acceleration = false;
 
@@ -25,13 +24,6 @@ struct PrismaticJoint {
     map3(S) = Vector3::Zero();
     map3(S + 3) = X_world_link.rotation().col(2);
   }
-  void configuration_derivative(const double*, const double* v, double* qdot) const { qdot[0] = v[0]; }
-  void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    q_out[0] = q[0] + v[0] * dt;
-  }
-  void difference(const double* q0, const double* q1, double* dv) const { dv[0] = q1[0] - q0[0]; }
-  void neutral(double* q) const { q[0] = 0.0; }
-  void normalize(double*) const {}
 };
 
 }  // namespace heavesim

@@ -5,8 +5,7 @@ namespace heavesim {
 
 /// Rotation by angle q [rad] about the joint frame's z axis; v = dq/dt [rad/s].
 /// S = [e_z; 0], c_J = 0; in the world S = [R e_z; p x R e_z] (third column of R).
-struct RevoluteJoint {
-  static constexpr int nq = 1, nv = 1;
+struct RevoluteJoint : PlainCoordinates<1> {
   static constexpr const char* type_name = "revolute";
   static constexpr bool has_bias_acceleration = false;
 
@@ -27,13 +26,6 @@ struct RevoluteJoint {
     map3(S) = axis;
     map3(S + 3) = X_world_link.translation().cross(axis);
   }
-  void configuration_derivative(const double*, const double* v, double* qdot) const { qdot[0] = v[0]; }
-  void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    q_out[0] = q[0] + v[0] * dt;
-  }
-  void difference(const double* q0, const double* q1, double* dv) const { dv[0] = q1[0] - q0[0]; }
-  void neutral(double* q) const { q[0] = 0.0; }
-  void normalize(double*) const {}
 };
 
 }  // namespace heavesim

@@ -12,8 +12,7 @@ struct SphericalJoint {
   static constexpr bool has_bias_acceleration = false;
 
   Transform transform(const double* q) const {
-    return Transform::from_rotation(
-        quaternion_from_wxyz(map4(q)).toRotationMatrix());
+    return Transform::from_rotation(quaternion_from_wxyz(map4(q)).toRotationMatrix());
   }
   MotionSubspace<3> motion_subspace(const double*) const {
     MotionSubspace<3> S;
@@ -28,24 +27,12 @@ struct SphericalJoint {
     act_on_subspace<nv>(X_world_link, motion_subspace(q), S);
   }
   void configuration_derivative(const double* q, const double* v, double* qdot) const {
-    quaternion_derivative(map4(q), map3(v),
-                          map4(qdot));
+    quaternion_derivative(map4(q), map3(v), map4(qdot));
   }
-  /// q_out = q (x) exp(v dt / 2): exact for constant body-frame angular velocity.
   void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    const Eigen::Quaterniond q0 = quaternion_from_wxyz(map4(q));
-    const Vector3 rotation = map3(v) * dt;
-    const double angle = rotation.norm();
-    const Eigen::Quaterniond dq =
-        angle > 0.0 ? Eigen::Quaterniond(Eigen::AngleAxisd(angle, rotation / angle))
-                    : Eigen::Quaterniond::Identity();
-    write_wxyz((q0 * dq).normalized(), map4(q_out));
+    integrate_quaternion(q, map3(v), dt, q_out);
   }
-  void difference(const double* q0, const double* q1, double* dv) const {
-    const Eigen::Quaterniond a = quaternion_from_wxyz(map4(q0));
-    const Eigen::Quaterniond b = quaternion_from_wxyz(map4(q1));
-    map3(dv) = rotation_vector(a.conjugate() * b);
-  }
+  void difference(const double* q0, const double* q1, double* dv) const { map3(dv) = quaternion_difference(q0, q1); }
   void neutral(double* q) const {
     q[0] = 1.0;
     q[1] = q[2] = q[3] = 0.0;

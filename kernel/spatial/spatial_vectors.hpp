@@ -15,17 +15,18 @@
 
 namespace heavesim {
 
-class Force;
-
-class Motion {
+/// What Motion and Force share: storage, packing and the vector-space operations.
+/// Motions and forces never mix in these operations; Derived keeps them apart.
+template <class Derived>
+class SpatialVector {
  public:
-  Motion() : angular_(Vector3::Zero()), linear_(Vector3::Zero()) {}
-  Motion(const Vector3& angular, const Vector3& linear) : angular_(angular), linear_(linear) {}
+  SpatialVector() : angular_(Vector3::Zero()), linear_(Vector3::Zero()) {}
+  SpatialVector(const Vector3& angular, const Vector3& linear) : angular_(angular), linear_(linear) {}
   /// From any 6-vector expression [angular; linear].
-  template <class Derived>
-  explicit Motion(const Eigen::MatrixBase<Derived>& packed)
+  template <class Packed>
+  explicit SpatialVector(const Eigen::MatrixBase<Packed>& packed)
       : angular_(packed.template head<3>()), linear_(packed.template tail<3>()) {}
-  static Motion Zero() { return Motion(); }
+  static Derived Zero() { return Derived(); }
 
   Vector3& angular() { return angular_; }
   const Vector3& angular() const { return angular_; }
@@ -38,20 +39,30 @@ class Motion {
     return packed;
   }
 
-  HEAVESIM_INLINE Motion operator+(const Motion& o) const { return Motion(angular_ + o.angular_, linear_ + o.linear_); }
-  HEAVESIM_INLINE Motion operator-(const Motion& o) const { return Motion(angular_ - o.angular_, linear_ - o.linear_); }
-  Motion operator-() const { return Motion(-angular_, -linear_); }
-  Motion operator*(double s) const { return Motion(angular_ * s, linear_ * s); }
-  HEAVESIM_INLINE Motion& operator+=(const Motion& o) {
+  HEAVESIM_INLINE Derived operator+(const Derived& o) const { return Derived(angular_ + o.angular_, linear_ + o.linear_); }
+  HEAVESIM_INLINE Derived operator-(const Derived& o) const { return Derived(angular_ - o.angular_, linear_ - o.linear_); }
+  Derived operator-() const { return Derived(-angular_, -linear_); }
+  Derived operator*(double s) const { return Derived(angular_ * s, linear_ * s); }
+  HEAVESIM_INLINE Derived& operator+=(const Derived& o) {
     angular_ += o.angular_;
     linear_ += o.linear_;
-    return *this;
+    return static_cast<Derived&>(*this);
   }
-  Motion& operator-=(const Motion& o) {
+  HEAVESIM_INLINE Derived& operator-=(const Derived& o) {
     angular_ -= o.angular_;
     linear_ -= o.linear_;
-    return *this;
+    return static_cast<Derived&>(*this);
   }
+
+ protected:
+  Vector3 angular_, linear_;
+};
+
+class Force;
+
+class Motion : public SpatialVector<Motion> {
+ public:
+  using SpatialVector::SpatialVector;
 
   /// Spatial cross product for motions, this x_m m (Featherstone eq. 2.31):
   /// [w x w_m ; w x v_m + v x w_m].
@@ -64,54 +75,17 @@ class Motion {
 
   /// Velocity of the point p (same frame as this motion) of the moving body.
   Vector3 point_velocity(const Vector3& p) const { return linear_ + angular_.cross(p); }
-
- private:
-  Vector3 angular_, linear_;
 };
 
-class Force {
+class Force : public SpatialVector<Force> {
  public:
-  Force() : angular_(Vector3::Zero()), linear_(Vector3::Zero()) {}
-  Force(const Vector3& angular, const Vector3& linear) : angular_(angular), linear_(linear) {}
-  /// From any 6-vector expression [moment; force].
-  template <class Derived>
-  explicit Force(const Eigen::MatrixBase<Derived>& packed)
-      : angular_(packed.template head<3>()), linear_(packed.template tail<3>()) {}
-  static Force Zero() { return Force(); }
+  using SpatialVector::SpatialVector;
 
   /// A force f acting at point p (both in this frame) as a spatial force about the origin.
   static Force at_point(const Vector3& p, const Vector3& f) { return Force(p.cross(f), f); }
 
-  Vector3& angular() { return angular_; }
-  const Vector3& angular() const { return angular_; }
-  Vector3& linear() { return linear_; }
-  const Vector3& linear() const { return linear_; }
-  Vector6 vector() const {
-    Vector6 packed;
-    packed << angular_, linear_;
-    return packed;
-  }
-
-  HEAVESIM_INLINE Force operator+(const Force& o) const { return Force(angular_ + o.angular_, linear_ + o.linear_); }
-  HEAVESIM_INLINE Force operator-(const Force& o) const { return Force(angular_ - o.angular_, linear_ - o.linear_); }
-  Force operator-() const { return Force(-angular_, -linear_); }
-  Force operator*(double s) const { return Force(angular_ * s, linear_ * s); }
-  HEAVESIM_INLINE Force& operator+=(const Force& o) {
-    angular_ += o.angular_;
-    linear_ += o.linear_;
-    return *this;
-  }
-  HEAVESIM_INLINE Force& operator-=(const Force& o) {
-    angular_ -= o.angular_;
-    linear_ -= o.linear_;
-    return *this;
-  }
-
   /// Moment of this force system about the point p (same frame).
   Vector3 moment_about(const Vector3& p) const { return angular_ - p.cross(linear_); }
-
- private:
-  Vector3 angular_, linear_;
 };
 
 HEAVESIM_INLINE Force Motion::cross(const Force& f) const {
