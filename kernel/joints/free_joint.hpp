@@ -12,6 +12,7 @@ struct FreeJoint {
   static constexpr int nq = 7, nv = 6;
   static constexpr const char* type_name = "free";
   static constexpr bool has_bias_acceleration = false;
+  static constexpr bool has_constant_subspace = true;
 
   Transform transform(const double* q) const {
     return Transform(quaternion_from_wxyz(map4(q + 3)).toRotationMatrix(), map3(q));

@@ -18,6 +18,12 @@
 //                                         exploiting the sparsity of X_J
 //   void world_motion_subspace(X_world_link, q, S)  S_world = X_world_link S (6 x nv,
 //                                         column-major at S)
+//   static constexpr bool has_constant_subspace     S and c_J do not depend on the
+//                                         joint's own q; otherwise the joint provides
+//                                         (local coordinates, for derivatives of dynamics):
+//     Motion subspace_derivative(q, column, coordinate)  dS[:, column] / dq[coordinate]
+//     Motion bias_position_derivative(q, v, coordinate)  dc_J / dq[coordinate]
+//     Motion bias_velocity_derivative(q, v, coordinate)  dc_J / dv[coordinate]
 //   void configuration_derivative(q, v, qdot)     qdot = N(q) v
 //   void integrate(q, v, dt, q_out)       q_out = q "+" v dt, staying on the manifold
 //   void difference(q0, q1, dv)           dv such that integrate(q0, dv, 1) = q1
@@ -44,6 +50,7 @@ inline Eigen::Map<const Eigen::Vector4d> map4(const double* p) { return Eigen::M
 template <int N>
 struct PlainCoordinates {
   static constexpr int nq = N, nv = N;
+  static constexpr bool has_constant_subspace = true;
   void configuration_derivative(const double*, const double* v, double* qdot) const {
     for (int k = 0; k < N; ++k) qdot[k] = v[k];
   }

@@ -10,6 +10,7 @@ struct SphericalJoint {
   static constexpr int nq = 4, nv = 3;
   static constexpr const char* type_name = "spherical";
   static constexpr bool has_bias_acceleration = false;
+  static constexpr bool has_constant_subspace = true;
 
   Transform transform(const double* q) const {
     return Transform::from_rotation(quaternion_from_wxyz(map4(q)).toRotationMatrix());

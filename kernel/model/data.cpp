@@ -18,6 +18,11 @@ Data::Data(const Model& model) : mass_matrix_cholesky(model.nv) {
   tau = VectorX::Zero(model.nv);
   composite_inertia_world.assign(n, Matrix6::Zero());
   mass_matrix = MatrixX::Zero(model.nv, model.nv);
+  dtau_dq = MatrixX::Zero(model.nv, model.nv);
+  dtau_dv = MatrixX::Zero(model.nv, model.nv);
+  derivative_velocity.assign(n, Motion::Zero());
+  derivative_acceleration.assign(n, Motion::Zero());
+  derivative_force.assign(n, Force::Zero());
   articulated_inertia_world.assign(n, Matrix6::Zero());
   articulated_bias_world.assign(n, Force::Zero());
   aba_U = Matrix6X::Zero(6, model.nv);

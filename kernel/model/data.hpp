@@ -40,6 +40,13 @@ struct Data {
   MatrixX mass_matrix;                            // nv x nv, both triangles filled
   Eigen::LLT<MatrixX> mass_matrix_cholesky;
 
+  // --- derivatives of inverse dynamics ---
+  MatrixX dtau_dq;                                // nv x nv: d tau / d q along each joint's tangent
+  MatrixX dtau_dv;                                // nv x nv: d tau / d v
+  AlignedVector<Motion> derivative_velocity;      // workspace: d v_k for the current column
+  AlignedVector<Motion> derivative_acceleration;  // workspace: d a_k
+  AlignedVector<Force> derivative_force;          // workspace: d f_k, then subtree sums d F_k
+
   // --- articulated-body workspace (ABA) ---
   AlignedVector<Matrix6> articulated_inertia_world;
   AlignedVector<Force> articulated_bias_world;
