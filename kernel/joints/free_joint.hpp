@@ -29,15 +29,27 @@ struct FreeJoint {
     map3(qdot) = quaternion_from_wxyz(map4(q + 3)) * map3(v + 3);
     quaternion_derivative(map4(q + 3), map3(v), map4(qdot + 3));
   }
-  /// Retraction on R^3 x SO(3): the position moves with the start orientation's axes,
-  /// the orientation by q (x) exp(w dt / 2).
+  /// The SE(3) exponential: the motion with constant body-frame velocity v for dt,
+  /// p(dt) = p + R V(w dt) v_linear dt, R(dt) = R exp(w dt), with
+  /// V(phi) = 1 + (1 - cos t)/t^2 [phi]x + (t - sin t)/t^3 [phi]x^2, t = |phi|.
   void integrate(const double* q, const double* v, double dt, double* q_out) const {
-    map3(q_out) = map3(q) + quaternion_from_wxyz(map4(q + 3)) * (map3(v + 3) * dt);
+    const Vector3 phi = map3(v) * dt;
+    map3(q_out) = map3(q) + quaternion_from_wxyz(map4(q + 3)) * (left_jacobian(phi) * (map3(v + 3) * dt));
     integrate_quaternion(q + 3, map3(v), dt, q_out + 3);
   }
+  /// The SE(3) logarithm of the relative pose: inverts integrate(q0, dv, 1).
   void difference(const double* q0, const double* q1, double* dv) const {
-    map3(dv) = quaternion_difference(q0 + 3, q1 + 3);
-    map3(dv + 3) = quaternion_from_wxyz(map4(q0 + 3)).conjugate() * (map3(q1) - map3(q0));
+    const Vector3 phi = quaternion_difference(q0 + 3, q1 + 3);
+    map3(dv) = phi;
+    map3(dv + 3) = left_jacobian(phi).inverse() *
+                   (quaternion_from_wxyz(map4(q0 + 3)).conjugate() * (map3(q1) - map3(q0)));
+  }
+  /// V(phi), the left Jacobian of SO(3) (series below 1e-4 rad to avoid cancellation).
+  static Matrix3 left_jacobian(const Vector3& phi) {
+    const double t = phi.norm();
+    const Matrix3 K = skew(phi);
+    if (t < 1e-4) return Matrix3::Identity() + 0.5 * K + (1.0 / 6.0) * K * K;
+    return Matrix3::Identity() + (1.0 - std::cos(t)) / (t * t) * K + (t - std::sin(t)) / (t * t * t) * K * K;
   }
   void neutral(double* q) const {
     q[0] = q[1] = q[2] = 0.0;

@@ -2,7 +2,9 @@
 
 namespace heavesim {
 
-Data::Data(const Model& model) : mass_matrix_cholesky(model.nv) {
+Data::Data(const Model& model)
+    : mass_matrix_cholesky(model.nv),
+      kkt_decomposition(model.num_constraint_rows, model.num_constraint_rows) {
   const int n = model.num_links();
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
@@ -18,6 +20,17 @@ Data::Data(const Model& model) : mass_matrix_cholesky(model.nv) {
   tau = VectorX::Zero(model.nv);
   composite_inertia_world.assign(n, Matrix6::Zero());
   mass_matrix = MatrixX::Zero(model.nv, model.nv);
+  const int m = model.num_constraint_rows;
+  constraint_residual = VectorX::Zero(m);
+  constraint_jacobian = MatrixX::Zero(m, model.nv);
+  constraint_bias = VectorX::Zero(m);
+  constraint_multipliers = VectorX::Zero(m);
+  kkt_minv_jt = MatrixX::Zero(model.nv, m);
+  kkt_schur = MatrixX::Zero(m, m);
+  kkt_rhs = VectorX::Zero(m);
+  kkt_free_qdd = VectorX::Zero(model.nv);
+  projection_step = VectorX::Zero(model.nv);
+  projection_configuration = VectorX::Zero(model.nq);
   dtau_dq = MatrixX::Zero(model.nv, model.nv);
   dtau_dv = MatrixX::Zero(model.nv, model.nv);
   derivative_velocity.assign(n, Motion::Zero());

@@ -6,6 +6,7 @@
 // ("absolute" spatial vectors, Featherstone 2008 sec. 2.8 / Pinocchio's WORLD
 // convention): composite and articulated inertias then add without transforms.
 #include <Eigen/Cholesky>
+#include <Eigen/QR>
 
 #include "kernel/model/model.hpp"
 
@@ -39,6 +40,20 @@ struct Data {
   AlignedVector<Matrix6> composite_inertia_world;
   MatrixX mass_matrix;                            // nv x nv, both triangles filled
   Eigen::LLT<MatrixX> mass_matrix_cholesky;
+
+  // --- constraints (closed loops); sized m = model.num_constraint_rows ---
+  VectorX constraint_residual;      // Phi (m)
+  MatrixX constraint_jacobian;      // J (m x nv)
+  VectorX constraint_bias;          // gamma = -dJ/dt v (m)
+  VectorX constraint_multipliers;   // lambda (m): M qdd + C = tau + J^T lambda
+  MatrixX kkt_minv_jt;              // M^-1 J^T (nv x m)
+  MatrixX kkt_schur;                // J M^-1 J^T (m x m)
+  VectorX kkt_rhs;                  // m
+  VectorX kkt_free_qdd;             // nv: qdd without constraint forces
+  Eigen::CompleteOrthogonalDecomposition<MatrixX> kkt_decomposition;
+  int kkt_rank = 0;                 // rank of J M^-1 J^T at the last solve
+  VectorX projection_step;          // nv: Newton correction in velocity coordinates
+  VectorX projection_configuration; // nq
 
   // --- derivatives of inverse dynamics ---
   MatrixX dtau_dq;                                // nv x nv: d tau / d q along each joint's tangent

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "kernel/constraints/constraint.hpp"
 #include "kernel/joints/joint.hpp"
 #include "kernel/spatial/inertia.hpp"
 
@@ -63,6 +64,8 @@ struct Link {
 struct Model {
   std::vector<Link> links;    // links[0] is the ground
   std::vector<Joint> joints;  // joints[i] moves links[i]; joints[0] is a placeholder
+  std::vector<Constraint> constraints;  // loop joints, distances, couplers (closed loops)
+  int num_constraint_rows = 0;          // m: scalar constraint equations in all constraints
   Vector3 gravity = Vector3(0.0, 0.0, -9.81);  // m/s^2, world frame
   int nq = 0;
   int nv = 0;
@@ -72,6 +75,7 @@ struct Model {
   int link_index(const std::string& body_name) const;
   /// Index of the joint with this name, -1 if none.
   int joint_index(const std::string& joint_name) const;
+  bool has_constraints() const { return num_constraint_rows > 0; }
   bool has_added_inertia() const;
   /// Total mass of all links [kg].
   double total_mass() const;

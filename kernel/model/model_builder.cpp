@@ -3,6 +3,7 @@
 #include <functional>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 #include <Eigen/Eigenvalues>
 
@@ -46,11 +47,20 @@ void check_body(const BodyDefinition& body) {
                      "moments satisfying the triangle inequality (each <= the sum of the other two)");
 }
 
+ModelError constraint_error(const std::string& name, const std::string& field, const std::string& found,
+                            const std::string& expected) {
+  return ModelError(ModelError::ItemKind::constraint, name, field, found, expected);
+}
+
 /// The canonical joint frame's axes in the user's joint frame: Q e_z = axis for
 /// axial joints; Q e_x = axis, Q e_y = second_axis for a universal joint.
-Matrix3 canonical_axes(const JointDefinition& joint) {
+template <class Definition>
+Matrix3 canonical_axes(const Definition& joint, ModelError::ItemKind item) {
+  auto error = [&](const std::string& field, const std::string& found, const std::string& expected) {
+    return ModelError(item, joint.name, field, found, expected);
+  };
   if (std::abs(joint.axis.norm() - 1.0) > 1e-6)
-    throw joint_error(joint.name, "axis", "an axis of length " + format_number(joint.axis.norm()), "a unit vector");
+    throw error("axis", "an axis of length " + format_number(joint.axis.norm()), "a unit vector");
   Matrix3 Q = Matrix3::Identity();
   switch (joint.kind) {
     case JointKind::revolute:
@@ -62,8 +72,7 @@ Matrix3 canonical_axes(const JointDefinition& joint) {
     }
     case JointKind::universal:
       if (std::abs(joint.second_axis.norm() - 1.0) > 1e-6 || std::abs(joint.axis.dot(joint.second_axis)) > 1e-6)
-        throw joint_error(joint.name, "axes", "axes that are not perpendicular unit vectors",
-                          "perpendicular unit axes (a Hooke joint)");
+        throw error("axes", "axes that are not perpendicular unit vectors", "perpendicular unit axes (a Hooke joint)");
       Q << joint.axis, joint.second_axis, joint.axis.cross(joint.second_axis);
       break;
     default:
@@ -73,6 +82,92 @@ Matrix3 canonical_axes(const JointDefinition& joint) {
 }
 
 }  // namespace
+
+void ModelBuilder::add_constraints(Model& model) const {
+  std::map<std::string, int> names;
+  auto claim_name = [&](const std::string& name) {
+    if (model.joint_index(name) > 0 || !names.emplace(name, 0).second)
+      throw constraint_error(name, "name", "'" + name + "' a second time (joints and constraints share names)",
+                             "a unique name");
+  };
+  auto link_of = [&](const std::string& constraint, const std::string& field, const std::string& body) {
+    const int link = model.link_index(body);
+    if (link < 0)
+      throw constraint_error(constraint, field, "'" + body + "', which is not a body", "'ground' or the name of a body");
+    return link;
+  };
+  auto add = [&](Constraint constraint) {
+    constraint.first_row = model.num_constraint_rows;
+    model.num_constraint_rows += static_cast<int>(constraint.rows.size());
+    model.constraints.push_back(std::move(constraint));
+  };
+
+  for (const LoopJointDefinition& def : loop_joints_) {
+    claim_name(def.name);
+    Constraint constraint;
+    constraint.name = def.name;
+    constraint.type = Constraint::Type::loop_joint;
+    constraint.joint_kind = def.kind;
+    constraint.link_a = link_of(def.name, "parent", def.parent);
+    constraint.link_b = link_of(def.name, "child", def.child);
+    if (constraint.link_a == constraint.link_b)
+      throw constraint_error(def.name, "child", "the parent body '" + def.parent + "' again",
+                             "two different bodies to connect");
+    if (def.kind == JointKind::free)
+      throw constraint_error(def.name, "type", "a free joint, which constrains nothing", "another joint type");
+    const Matrix3 Q = canonical_axes(def, ModelError::ItemKind::constraint);
+    const Transform rotate = Transform::from_rotation(Q);
+    constraint.X_linkA_frame = model.links[constraint.link_a].X_link_body * def.X_parent_joint * rotate;
+    constraint.X_linkB_frame = model.links[constraint.link_b].X_link_body * def.X_child_joint * rotate;
+    constraint.R_joint_frame = Q;
+    constraint.rows = loop_joint_rows(def.kind);
+    add(std::move(constraint));
+  }
+  for (const DistanceConstraintDefinition& def : distances_) {
+    claim_name(def.name);
+    Constraint constraint;
+    constraint.name = def.name;
+    constraint.type = Constraint::Type::distance;
+    constraint.link_a = link_of(def.name, "body_a", def.body_a);
+    constraint.link_b = link_of(def.name, "body_b", def.body_b);
+    if (constraint.link_a == constraint.link_b)
+      throw constraint_error(def.name, "body_b", "body '" + def.body_a + "' on both ends", "two different bodies");
+    if (!(def.distance > 0.0) || !std::isfinite(def.distance))
+      throw constraint_error(def.name, "distance", format_number(def.distance),
+                             "a positive distance in m (use a spherical loop joint for coincident points)");
+    constraint.X_linkA_frame = model.links[constraint.link_a].X_link_body * Transform::from_translation(def.point_a);
+    constraint.X_linkB_frame = model.links[constraint.link_b].X_link_body * Transform::from_translation(def.point_b);
+    constraint.distance = def.distance;
+    constraint.rows = {{ConstraintRowKind::distance, 0, 0, "distance"}};
+    add(std::move(constraint));
+  }
+  for (const CouplerDefinition& def : couplers_) {
+    claim_name(def.name);
+    Constraint constraint;
+    constraint.name = def.name;
+    constraint.type = Constraint::Type::coupler;
+    for (const auto& [field, joint_name, joint_index] :
+         {std::tuple{"joint_a", def.joint_a, &constraint.joint_a},
+          std::tuple{"joint_b", def.joint_b, &constraint.joint_b}}) {
+      const int index = model.joint_index(joint_name);
+      if (index < 0)
+        throw constraint_error(def.name, field, "'" + joint_name + "', which is not a joint", "the name of a joint");
+      const Joint& joint = model.joints[index];
+      if (joint.nv != 1 || !joint_has_scalar_coordinates(joint.type))
+        throw constraint_error(def.name, field, "a " + joint_type_name(joint.type) + " joint",
+                               "a revolute or prismatic joint");
+      *joint_index = index;
+    }
+    if (constraint.joint_a == constraint.joint_b)
+      throw constraint_error(def.name, "joint_b", "joint '" + def.joint_a + "' on both ends", "two different joints");
+    if (!std::isfinite(def.ratio) || !std::isfinite(def.offset))
+      throw constraint_error(def.name, "ratio", "a non-finite ratio or offset", "finite numbers");
+    constraint.ratio = def.ratio;
+    constraint.offset = def.offset;
+    constraint.rows = {{ConstraintRowKind::coupler, 0, 0, "coupled coordinates"}};
+    add(std::move(constraint));
+  }
+}
 
 Model ModelBuilder::build() const {
   std::map<std::string, int> body_index;
@@ -127,7 +222,7 @@ Model ModelBuilder::build() const {
       const JointDefinition& def = joints_[j];
       const BodyDefinition& body = bodies_[body_index.at(def.child)];
       const int link_id = model.num_links();
-      const Matrix3 Q = canonical_axes(def);
+      const Matrix3 Q = canonical_axes(def, ModelError::ItemKind::joint);
       Joint joint;
       joint.name = def.name;
       joint.type = canonical_joint_type(def.kind);
@@ -174,6 +269,7 @@ Model ModelBuilder::build() const {
                           "a tree rooted at ground (close kinematic loops with a loop joint)");
       }
   }
+  add_constraints(model);
   for (int i = model.num_links() - 1; i >= 0; --i) {
     model.links[i].subtree_end = i + 1;
     for (int c : model.links[i].children)

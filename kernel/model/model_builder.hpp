@@ -11,10 +11,10 @@ namespace heavesim {
 /// so that callers can point at the exact place in their input.
 class ModelError : public std::runtime_error {
  public:
-  enum class ItemKind { body, joint };
+  enum class ItemKind { body, joint, constraint };
   ModelError(ItemKind kind, std::string item, std::string field, std::string found, std::string expected)
-      : std::runtime_error((kind == ItemKind::body ? "body '" : "joint '") + item + "', " + field + ": found " +
-                           found + "; expected " + expected),
+      : std::runtime_error((kind == ItemKind::body ? "body '" : kind == ItemKind::joint ? "joint '" : "constraint '") +
+                           item + "', " + field + ": found " + found + "; expected " + expected),
         kind_(kind),
         item_(std::move(item)),
         field_(std::move(field)),
@@ -51,6 +51,38 @@ struct JointDefinition {
   std::optional<JointLimits> limits;
 };
 
+/// A joint that closes a kinematic loop between two bodies already in the tree (a
+/// cut joint): the same kinds, axes and frames as JointDefinition, but it adds
+/// constraint equations instead of coordinates.
+struct LoopJointDefinition {
+  std::string name;
+  JointKind kind = JointKind::revolute;
+  Vector3 axis = Vector3::UnitZ();
+  Vector3 second_axis = Vector3::UnitY();
+  std::string parent;                    // body name or "ground" (side A)
+  std::string child;                     // body name or "ground" (side B)
+  Transform X_parent_joint;              // joint frame in the parent body frame
+  Transform X_child_joint;               // joint frame in the child body frame
+};
+
+/// Keeps two points a fixed distance apart (a massless rod with ball ends).
+struct DistanceConstraintDefinition {
+  std::string name;
+  std::string body_a, body_b;            // body names or "ground"
+  Vector3 point_a = Vector3::Zero();     // m, in body a's frame
+  Vector3 point_b = Vector3::Zero();     // m, in body b's frame
+  double distance = 1.0;                 // m, > 0
+};
+
+/// Ties the coordinates of two 1-DoF joints: q_a = ratio q_b + offset (gears, belts,
+/// two cylinders driven as one).
+struct CouplerDefinition {
+  std::string name;
+  std::string joint_a, joint_b;
+  double ratio = 1.0;
+  double offset = 0.0;                   // rad or m
+};
+
 class ModelBuilder {
  public:
   static constexpr const char* ground_name = "ground";
@@ -58,15 +90,24 @@ class ModelBuilder {
   void set_gravity(const Vector3& gravity_world) { gravity_ = gravity_world; }
   void add_body(BodyDefinition body) { bodies_.push_back(std::move(body)); }
   void add_joint(JointDefinition joint) { joints_.push_back(std::move(joint)); }
+  void add_loop_joint(LoopJointDefinition joint) { loop_joints_.push_back(std::move(joint)); }
+  void add_distance_constraint(DistanceConstraintDefinition constraint) {
+    distances_.push_back(std::move(constraint));
+  }
+  void add_coupler(CouplerDefinition coupler) { couplers_.push_back(std::move(coupler)); }
 
   /// Checks the topology (each body the child of exactly one joint, no cycle, all
-  /// connected to ground) and the physical data; throws ModelError.
+  /// connected to ground), the physical data and the constraints; throws ModelError.
   Model build() const;
 
  private:
+  void add_constraints(Model& model) const;
   Vector3 gravity_ = Vector3(0.0, 0.0, -9.81);
   std::vector<BodyDefinition> bodies_;
   std::vector<JointDefinition> joints_;
+  std::vector<LoopJointDefinition> loop_joints_;
+  std::vector<DistanceConstraintDefinition> distances_;
+  std::vector<CouplerDefinition> couplers_;
 };
 
 }  // namespace heavesim

@@ -63,6 +63,31 @@ Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options) {
     }
     builder.add_joint(joint);
   }
+  if (options.constraints) {
+    // Loop joints of every constraining kind between random pairs of bodies (not
+    // assembled: the equations and their derivatives hold at any configuration).
+    const JointKind loop_kinds[6] = {JointKind::fixed,       JointKind::revolute,  JointKind::prismatic,
+                                     JointKind::cylindrical, JointKind::universal, JointKind::spherical};
+    std::uniform_int_distribution<int> pick(-1, options.bodies - 1);
+    auto body_name = [](int b) { return b < 0 ? std::string("ground") : "body" + std::to_string(b); };
+    for (int k = 0; k < 6; ++k) {
+      LoopJointDefinition loop;
+      loop.name = "loop" + std::to_string(k);
+      loop.kind = loop_kinds[k];
+      loop.axis = random_unit(random);
+      loop.second_axis = loop.axis.unitOrthogonal();
+      int a = pick(random), b = pick(random);
+      while (b == a) b = pick(random);
+      loop.parent = body_name(a);
+      loop.child = body_name(b);
+      loop.X_parent_joint = Transform(random_rotation(random), random_vector(random, 0.5));
+      loop.X_child_joint = Transform(random_rotation(random), random_vector(random, 0.5));
+      builder.add_loop_joint(loop);
+    }
+    builder.add_distance_constraint({"rod", "body0", "body" + std::to_string(options.bodies - 1),
+                                     random_vector(random, 0.3), random_vector(random, 0.3), 1.3});
+    builder.add_coupler({"gear", "joint1", options.bodies > 8 ? "joint8" : "joint2", -0.7, 0.2});
+  }
   return builder.build();
 }
 

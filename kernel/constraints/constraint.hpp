@@ -1,0 +1,51 @@
+#pragma once
+// Constraints that close kinematic loops or tie coordinates together, as stored in
+// the Model. Each is a set of scalar rows of Haug's basic kinds (E. J. Haug,
+// Computer-Aided Kinematics and Dynamics of Mechanical Systems, 1989, ch. 3), written
+// on frames A (on link_a) and B (on link_b):
+//
+//   along          d_A . (p_B - p_A) = 0        blocks translation along d (an axis of A)
+//   perpendicular  a_A . b_B = 0                keeps an axis of A perpendicular to one of B
+//   distance       (|p_B - p_A|^2 - L^2) / 2 = 0
+//   coupler        q_a - ratio q_b - offset = 0 (coordinates of two 1-DoF joints)
+//
+// For every spatial row d(phi)/dt = G_B . (v_B - v_A) exactly, with G_B a world spatial
+// force direction on B (and -G_B on A): this gives J, -dJ/dt v and the constraint's
+// reaction wrench without finite differences (constraint_equations.hpp).
+#include <string>
+#include <vector>
+
+#include "kernel/joints/joint.hpp"
+#include "kernel/spatial/transform.hpp"
+
+namespace heavesim {
+
+enum class ConstraintRowKind { along, perpendicular, distance, coupler };
+
+struct ConstraintRow {
+  ConstraintRowKind kind = ConstraintRowKind::along;
+  int axis_a = 0;  // along: axis of frame A (0 x, 1 y, 2 z); perpendicular: axis of A
+  int axis_b = 0;  // perpendicular: axis of frame B
+  std::string description;  // e.g. "translation along x"
+};
+
+struct Constraint {
+  enum class Type { loop_joint, distance, coupler };
+  std::string name;
+  Type type = Type::loop_joint;
+  JointKind joint_kind = JointKind::fixed;  // loop joints: the joint they stand for
+  int link_a = 0, link_b = 0;               // frame A on link_a (the joint's parent side), B on link_b
+  Transform X_linkA_frame, X_linkB_frame;   // canonical frames (axis on z) in their links
+  Matrix3 R_joint_frame = Matrix3::Identity();  // frame B's axes in the user's joint frame
+  double distance = 0.0;                    // m, distance constraints
+  int joint_a = 0, joint_b = 0;             // coupler: the two 1-DoF joints (model joint indices)
+  double ratio = 1.0, offset = 0.0;         // coupler: q_a = ratio q_b + offset
+  int first_row = 0;
+  std::vector<ConstraintRow> rows;
+};
+
+/// The rows that stand for a loop joint of this kind on canonical frames (axis on z;
+/// universal: x on A, y on B): the complement of the joint's free motions.
+std::vector<ConstraintRow> loop_joint_rows(JointKind kind);
+
+}  // namespace heavesim

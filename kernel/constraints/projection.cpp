@@ -1,0 +1,84 @@
+#include "kernel/constraints/projection.hpp"
+
+#include <Eigen/QR>
+
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/kinematics.hpp"
+#include "kernel/algorithms/mass_matrix.hpp"
+#include "kernel/constraints/constraint_equations.hpp"
+
+namespace heavesim {
+namespace {
+
+/// step = -M^-1 J^T (J M^-1 J^T)^+ r for the current J and M's Cholesky factor.
+void minimum_energy_correction(Data& data, const VectorX& r) {
+  data.kkt_minv_jt = data.constraint_jacobian.transpose();
+  data.mass_matrix_cholesky.solveInPlace(data.kkt_minv_jt);
+  data.kkt_schur.noalias() = data.constraint_jacobian * data.kkt_minv_jt;
+  data.kkt_decomposition.setThreshold(1e-10);
+  data.kkt_decomposition.compute(data.kkt_schur);
+  data.kkt_rhs = data.kkt_decomposition.solve(r);
+  data.projection_step.noalias() = -data.kkt_minv_jt * data.kkt_rhs;
+}
+
+}  // namespace
+
+ProjectionResult project_to_constraints(const Model& model, Data& data, VectorX& q, VectorX& v, double tolerance,
+                                        int max_iterations) {
+  ProjectionResult result;
+  if (!model.has_constraints()) {
+    result.converged = true;
+    return result;
+  }
+  for (;;) {
+    update_positions(model, data, q);
+    constraint_residual(model, data, q, data.constraint_residual);
+    result.position_residual = data.constraint_residual.cwiseAbs().maxCoeff();
+    if (result.position_residual <= tolerance || result.iterations >= max_iterations) break;
+    constraint_jacobian(model, data, data.constraint_jacobian);
+    data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+    minimum_energy_correction(data, data.constraint_residual);
+    data.projection_configuration = q;
+    integrate_configuration(model, data.projection_configuration, data.projection_step, 1.0, q);
+    ++result.iterations;
+  }
+  result.converged = result.position_residual <= tolerance;
+
+  // Velocities: v -= M^-1 J^T (J M^-1 J^T)^+ J v at the projected configuration.
+  constraint_jacobian(model, data, data.constraint_jacobian);
+  data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+  data.constraint_bias.noalias() = data.constraint_jacobian * v;  // workspace: J v
+  minimum_energy_correction(data, data.constraint_bias);
+  v += data.projection_step;
+  data.constraint_bias.noalias() = data.constraint_jacobian * v;
+  result.velocity_residual = data.constraint_bias.cwiseAbs().maxCoeff();
+  return result;
+}
+
+ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double relative_threshold) {
+  ConstraintRank result;
+  result.rows = model.num_constraint_rows;
+  if (result.rows == 0) return result;
+  constraint_jacobian(model, data, data.constraint_jacobian);
+  Eigen::ColPivHouseholderQR<MatrixX> qr(data.constraint_jacobian.transpose());
+  qr.setThreshold(relative_threshold);
+  result.rank = static_cast<int>(qr.rank());
+  // Pivoting brings independent rows (columns of J^T) first; the rest depend on them.
+  for (int k = result.rank; k < result.rows; ++k) result.redundant_rows.push_back(qr.colsPermutation().indices()[k]);
+  std::sort(result.redundant_rows.begin(), result.redundant_rows.end());
+  return result;
+}
+
+std::string describe_constraint_row(const Model& model, int row) {
+  for (const Constraint& constraint : model.constraints) {
+    const int local = row - constraint.first_row;
+    if (local < 0 || local >= static_cast<int>(constraint.rows.size())) continue;
+    const char* type = constraint.type == Constraint::Type::loop_joint ? "loop joint"
+                       : constraint.type == Constraint::Type::distance ? "distance constraint"
+                                                                       : "coupler";
+    return std::string(type) + " '" + constraint.name + "': " + constraint.rows[local].description;
+  }
+  return "row " + std::to_string(row);
+}
+
+}  // namespace heavesim

@@ -1,0 +1,138 @@
+// Constraint equations against finite differences of Phi itself: J = dPhi/dq along
+// every tangent direction, gamma = -(d^2 Phi/dt^2 at qdd = 0), and the loads J^T lambda.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/inverse_dynamics.hpp"
+#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/constraints/projection.hpp"
+#include "kernel/model/model_builder.hpp"
+#include "validation/checks/random_models.hpp"
+
+namespace heavesim {
+namespace {
+
+class Constraints : public ::testing::Test {
+ protected:
+  Constraints() {
+    validation::RandomTreeOptions options;
+    options.bodies = 10;
+    options.constraints = true;
+    model = std::make_unique<Model>(validation::random_tree(random, options));
+    data = std::make_unique<Data>(*model);
+  }
+  VectorX residual_at(const VectorX& q) {
+    VectorX phi(model->num_constraint_rows);
+    update_positions(*model, *data, q);
+    constraint_residual(*model, *data, q, phi);
+    return phi;
+  }
+  std::mt19937_64 random{21};
+  std::unique_ptr<Model> model;
+  std::unique_ptr<Data> data;
+};
+
+TEST_F(Constraints, EveryKindContributesItsRows) {
+  // fixed 6 + revolute 5 + prismatic 5 + cylindrical 4 + universal 4 + spherical 3 + distance 1 + coupler 1
+  EXPECT_EQ(model->num_constraint_rows, 29);
+}
+
+TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
+  for (int trial = 0; trial < 5; ++trial) {
+    const validation::RandomState state = validation::random_state(*model, random);
+    update_positions(*model, *data, state.q);
+    MatrixX J(model->num_constraint_rows, model->nv);
+    constraint_jacobian(*model, *data, J);
+    const double h = 1e-6;
+    VectorX q_plus(model->nq), q_minus(model->nq);
+    MatrixX finite(model->num_constraint_rows, model->nv);
+    for (int j = 0; j < model->nv; ++j) {
+      integrate_configuration(*model, state.q, VectorX::Unit(model->nv, j), h, q_plus);
+      integrate_configuration(*model, state.q, VectorX::Unit(model->nv, j), -h, q_minus);
+      finite.col(j) = (residual_at(q_plus) - residual_at(q_minus)) / (2 * h);
+    }
+    EXPECT_LT((J - finite).norm() / J.norm(), 1e-8);
+  }
+}
+
+TEST_F(Constraints, BiasIsMinusTheSecondDerivativeAtZeroAcceleration) {
+  // Along q(t) = q "+" v t (constant speeds: qdd = 0) Phi'' = dJ/dt v = -gamma.
+  for (int trial = 0; trial < 5; ++trial) {
+    const validation::RandomState state = validation::random_state(*model, random);
+    update_positions(*model, *data, state.q);
+    update_velocities(*model, *data, state.q, state.v);
+    VectorX gamma(model->num_constraint_rows);
+    constraint_bias(*model, *data, gamma);
+    const double h = 1e-4;
+    VectorX q_plus(model->nq), q_minus(model->nq);
+    integrate_configuration(*model, state.q, state.v, h, q_plus);
+    integrate_configuration(*model, state.q, state.v, -h, q_minus);
+    const VectorX second = (residual_at(q_plus) - 2.0 * residual_at(state.q) + residual_at(q_minus)) / (h * h);
+    EXPECT_LT((gamma + second).norm() / gamma.norm(), 1e-5);
+  }
+}
+
+TEST_F(Constraints, LoadsAreJacobianTransposeTimesMultipliers) {
+  const validation::RandomState state = validation::random_state(*model, random);
+  update_positions(*model, *data, state.q);
+  MatrixX J(model->num_constraint_rows, model->nv);
+  constraint_jacobian(*model, *data, J);
+  VectorX lambda(model->num_constraint_rows);
+  for (int r = 0; r < lambda.size(); ++r) lambda[r] = std::uniform_real_distribution<double>(-5, 5)(random);
+  AlignedVector<Force> loads(model->num_links(), Force::Zero());
+  VectorX tau = VectorX::Zero(model->nv);
+  add_constraint_loads(*model, *data, lambda, loads, tau);
+  // Generalized force of the link loads: -(ID with them - ID without), at v = qdd = 0.
+  const VectorX zero = VectorX::Zero(model->nv);
+  const VectorX with_loads = rnea(*model, *data, state.q, zero, zero, loads);
+  const VectorX without = rnea(*model, *data, state.q, zero, zero);
+  const VectorX generalized = tau - (with_loads - without);
+  EXPECT_LT((generalized - J.transpose() * lambda).norm() / generalized.norm(), 1e-12);
+}
+
+TEST(ConstraintRank, RedundantRowsOfAnOverconstrainedLoopAreNamed) {
+  // Two parallel prismatic rods on the ground tied to one block by fixed loop joints:
+  // the block is on rod a (fixed); the fixed joint to rod b repeats all but one of
+  // rod a's constraints, so 5 of its 6 rows are redundant.
+  ModelBuilder builder;
+  for (const char* body : {"rod_a", "rod_b", "block"})
+    builder.add_body({body, Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
+  JointDefinition slide_a, slide_b, weld;
+  slide_a.name = "slide_a";
+  slide_a.kind = JointKind::prismatic;
+  slide_a.parent = "ground";
+  slide_a.child = "rod_a";
+  slide_a.X_parent_joint = Transform::from_translation(Vector3(-1, 0, 0));
+  slide_b = slide_a;
+  slide_b.name = "slide_b";
+  slide_b.child = "rod_b";
+  slide_b.X_parent_joint = Transform::from_translation(Vector3(1, 0, 0));
+  weld.name = "weld_a";
+  weld.kind = JointKind::fixed;
+  weld.parent = "rod_a";
+  weld.child = "block";
+  weld.X_child_joint = Transform::from_translation(Vector3(-1, 0, 0));
+  builder.add_joint(slide_a);
+  builder.add_joint(slide_b);
+  builder.add_joint(weld);
+  LoopJointDefinition tie;
+  tie.name = "weld_b";
+  tie.kind = JointKind::fixed;
+  tie.parent = "rod_b";
+  tie.child = "block";
+  tie.X_child_joint = Transform::from_translation(Vector3(1, 0, 0));
+  builder.add_loop_joint(tie);
+  const Model model = builder.build();
+  Data data(model);
+  update_positions(model, data, model.neutral_configuration());
+  const ConstraintRank rank = analyse_constraint_rank(model, data);
+  EXPECT_EQ(rank.rows, 6);
+  EXPECT_EQ(rank.rank, 1);
+  EXPECT_EQ(rank.redundant_rows.size(), 5u);
+  EXPECT_NE(describe_constraint_row(model, 2).find("loop joint 'weld_b': translation along z"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace heavesim
