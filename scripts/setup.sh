@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsundials-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev libssl-dev
+  libeigen3-dev libsundials-dev libsuitesparse-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy python3-h5py python3-matplotlib
 )

@@ -15,7 +15,9 @@ Scene build_scene(const CaseDefinition& definition) {
     throw to_input_error(definition, error);
   }
   const Model& model = *scene.model;
-  scene.system = std::make_unique<MultibodySystem>(scene.model, definition.solver.dynamics);
+  SystemSettings settings;
+  settings.method = definition.solver.dynamics;
+  scene.system = std::make_unique<MultibodySystem>(scene.model, settings);
 
   VectorX q0 = model.neutral_configuration();
   VectorX v0 = VectorX::Zero(model.nv);

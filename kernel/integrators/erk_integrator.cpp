@@ -17,23 +17,20 @@ void ErkIntegrator::release() {
 
 int ErkIntegrator::rhs(double t, N_Vector y, N_Vector ydot, void* user_data) {
   auto* self = static_cast<ErkIntegrator*>(user_data);
-  const int flag =
-      sundials::evaluate_derivative(*self->system_, t, y, self->work_y_, self->work_f_, self->callback_error_);
-  if (flag == 0) sundials::map(ydot) = self->work_f_;
-  return flag;
+  return sundials::guarded(self->callback_error_, [&] {
+    self->work_y_ = sundials::map(y);
+    self->system_->derivative(t, self->work_y_, self->work_f_);
+    sundials::map(ydot) = self->work_f_;
+  });
 }
 
 int ErkIntegrator::project_step(double t, N_Vector y, void* user_data) {
   auto* self = static_cast<ErkIntegrator*>(user_data);
-  try {
+  return sundials::guarded(self->callback_error_, [&] {
     self->work_y_ = sundials::map(y);
     self->system_->project(t, self->work_y_);
     sundials::map(y) = self->work_y_;
-    return 0;
-  } catch (...) {
-    self->callback_error_.exception = std::current_exception();
-    return -1;
-  }
+  });
 }
 
 void ErkIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {

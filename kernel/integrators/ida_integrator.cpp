@@ -1,6 +1,10 @@
 #include "kernel/integrators/ida_integrator.hpp"
 
 #include <ida/ida.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <string>
 
@@ -12,46 +16,114 @@ void IdaIntegrator::release() {
   if (ida_) IDAFree(&ida_);
   if (linear_solver_) SUNLinSolFree(linear_solver_);
   if (matrix_) SUNMatDestroy(matrix_);
-  if (y_nv_) N_VDestroy(y_nv_);
-  if (yp_nv_) N_VDestroy(yp_nv_);
+  for (N_Vector* v : {&y_nv_, &yp_nv_, &id_nv_})
+    if (*v) {
+      N_VDestroy(*v);
+      *v = nullptr;
+    }
   ida_ = nullptr;
   linear_solver_ = nullptr;
   matrix_ = nullptr;
-  y_nv_ = yp_nv_ = nullptr;
 }
 
 int IdaIntegrator::residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data) {
   auto* self = static_cast<IdaIntegrator*>(user_data);
-  const int flag =
-      sundials::evaluate_derivative(*self->system_, t, y, self->work_y_, self->work_f_, self->callback_error_);
-  if (flag == 0) sundials::map(r) = sundials::map(yp) - self->work_f_;
-  return flag;
+  return sundials::guarded(self->callback_error_, [&] {
+    self->work_y_ = sundials::map(y);
+    self->work_yp_ = sundials::map(yp);
+    self->dae_->residual(t, self->work_y_, self->work_yp_, self->work_r_);
+    sundials::map(r) = self->work_r_;
+  });
+}
+
+int IdaIntegrator::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J, void* user_data,
+                            N_Vector, N_Vector, N_Vector) {
+  auto* self = static_cast<IdaIntegrator*>(user_data);
+  return sundials::guarded(self->callback_error_, [&] {
+    self->work_y_ = sundials::map(y);
+    self->work_yp_ = sundials::map(yp);
+    self->dae_->jacobian(t, self->work_y_, self->work_yp_, cj, self->work_jacobian_);
+    self->store_jacobian(J);
+  });
+}
+
+void IdaIntegrator::store_jacobian(SUNMatrix J) const {
+  const int n = static_cast<int>(work_jacobian_.rows());
+  if (SUNMatGetID(J) == SUNMATRIX_DENSE) {
+    for (int c = 0; c < n; ++c)
+      Eigen::Map<VectorX>(SUNDenseMatrix_Column(J, c), n) = work_jacobian_.col(c);
+    return;
+  }
+  // Compressed sparse columns on the pattern fixed at initialization.
+  sunindextype* column_start = SUNSparseMatrix_IndexPointers(J);
+  sunindextype* row_index = SUNSparseMatrix_IndexValues(J);
+  double* values = SUNSparseMatrix_Data(J);
+  int k = 0;
+  for (int c = 0; c < n; ++c) {
+    column_start[c] = k;
+    while (k < static_cast<int>(sparsity_.size()) && sparsity_[k].second == c) {
+      row_index[k] = sparsity_[k].first;
+      values[k] = work_jacobian_(sparsity_[k].first, c);
+      ++k;
+    }
+  }
+  column_start[n] = k;
 }
 
 void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
   release();
   system_ = &system;
+  dae_ = dynamic_cast<DaeSystem*>(&system);
+  if (!dae_) {
+    ode_residual_ = std::make_unique<OdeResidual>(system);
+    dae_ = ode_residual_.get();
+  }
   t_ = t0;
-  y_ = y0;
-  const int n = system.size();
+  state_ = y0;
+  const int n = dae_->dae_size();
   work_y_.resize(n);
-  work_f_.resize(n);
+  work_yp_.resize(n);
+  work_r_.resize(n);
+  dae_->dae_initial_values(t0, y0, work_y_, work_yp_);
   y_nv_ = N_VNew_Serial(n, context_);
   yp_nv_ = N_VNew_Serial(n, context_);
-  sundials::map(y_nv_) = y0;
-  work_y_ = y0;
-  system.derivative(t0, work_y_, work_f_);
-  sundials::map(yp_nv_) = work_f_;
+  id_nv_ = N_VNew_Serial(n, context_);
+  sundials::map(y_nv_) = work_y_;
+  sundials::map(yp_nv_) = work_yp_;
+  VectorX mask;
+  dae_->differential_mask(mask);
+  sundials::map(id_nv_) = mask;
 
   ida_ = IDACreate(context_);
   IDAInit(ida_, &IdaIntegrator::residual, t0, y_nv_, yp_nv_);
   IDASetUserData(ida_, this);
   IDASStolerances(ida_, settings_.relative_tolerance, settings_.absolute_tolerance);
-  matrix_ = SUNDenseMatrix(n, n, context_);
-  linear_solver_ = SUNLinSol_Dense(y_nv_, matrix_, context_);
-  IDASetLinearSolver(ida_, linear_solver_, matrix_);
+  IDASetId(ida_, id_nv_);
+  if (mask.minCoeff() < 1.0) IDASetSuppressAlg(ida_, SUNTRUE);  // multipliers: no error test
   IDASetMaxNumSteps(ida_, settings_.max_steps_per_output);
   if (settings_.max_step > 0.0) IDASetMaxStep(ida_, settings_.max_step);
+
+  // The system's own Newton matrix if it has one; its first value fixes the sparsity
+  // pattern (with a second look at a nudged state, so that values that happen to be
+  // zero here do not drop out of the pattern).
+  const bool analytic = dae_->jacobian(t0, work_y_, work_yp_, 1.0, work_jacobian_);
+  if (analytic && settings_.linear_solver == LinearSolver::sparse) {
+    MatrixX pattern = work_jacobian_.cwiseAbs();
+    VectorX nudged = work_y_ + 1e-3 * VectorX::Ones(n).cwiseProduct(work_y_.cwiseAbs() + VectorX::Ones(n));
+    dae_->jacobian(t0, nudged, work_yp_, 1.7, work_jacobian_);
+    pattern += work_jacobian_.cwiseAbs();
+    sparsity_.clear();
+    for (int c = 0; c < n; ++c)
+      for (int r = 0; r < n; ++r)
+        if (pattern(r, c) != 0.0 || r == c) sparsity_.emplace_back(r, c);
+    matrix_ = SUNSparseMatrix(n, n, static_cast<sunindextype>(sparsity_.size()), CSC_MAT, context_);
+    linear_solver_ = SUNLinSol_KLU(y_nv_, matrix_, context_);
+  } else {
+    matrix_ = SUNDenseMatrix(n, n, context_);
+    linear_solver_ = SUNLinSol_Dense(y_nv_, matrix_, context_);
+  }
+  IDASetLinearSolver(ida_, linear_solver_, matrix_);
+  if (analytic) IDASetJacFn(ida_, &IdaIntegrator::jacobian);
 }
 
 void IdaIntegrator::advance_to(double t_out) {
@@ -73,7 +145,7 @@ void IdaIntegrator::advance_to(double t_out) {
       case IDA_ERR_FAIL:
       case IDA_CONV_FAIL:
         suggestion = "step-size collapse: the solution changes abruptly; loosen tolerances, check force "
-                     "elements for discontinuities or unstable parameters";
+                     "elements for discontinuities or unstable parameters, or a singular loop configuration";
         break;
       default:
         suggestion = "check the model for singular configurations or non-finite forces";
@@ -81,8 +153,8 @@ void IdaIntegrator::advance_to(double t_out) {
     throw NumericalError(t_reached, what, suggestion);
   }
   t_ = t_out;
-  y_ = sundials::map(y_nv_);
-  system_->project(t_, y_);
+  work_y_ = sundials::map(y_nv_);
+  dae_->state_from_dae(work_y_, state_);
 }
 
 IntegratorStatistics IdaIntegrator::statistics() const {

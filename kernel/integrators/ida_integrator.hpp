@@ -1,39 +1,51 @@
 #pragma once
 #include <nvector/nvector_serial.h>
-#include <sunlinsol/sunlinsol_dense.h>
-#include <sunmatrix/sunmatrix_dense.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
 
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/integrators/sundials_support.hpp"
+#include "kernel/system/dae_system.hpp"
 
 namespace heavesim {
 
-/// SUNDIALS IDA (variable-order, variable-step BDF) on the ODE written as the
-/// residual F(t, y, y') = y' - f(t, y), with a dense direct linear solver and IDA's
-/// difference-quotient Jacobian. Suited to stiff force elements (hydraulics, end stops).
+/// SUNDIALS IDA (variable-order, variable-step BDF) on a DaeSystem: the system's own
+/// implicit form when it has one (the stabilized index-2 form of a multibody model
+/// with loops, with its algebraic multipliers excluded from the error test), else the
+/// ODE written as F = y' - f(t, y). Newton matrices come from the system when it
+/// provides them (dense, or sparse through KLU), else from IDA's difference quotients.
+/// Suited to stiff force elements (hydraulics, end stops) and closed loops.
 class IdaIntegrator : public Integrator {
  public:
   explicit IdaIntegrator(const IntegratorSettings& settings) : settings_(settings) {}
   ~IdaIntegrator() override;
   void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
-  const VectorX& state() const override { return y_; }
+  const VectorX& state() const override { return state_; }
   double time() const override { return t_; }
   IntegratorStatistics statistics() const override;
 
  private:
   static int residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data);
+  static int jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user_data,
+                      N_Vector, N_Vector, N_Vector);
   void release();
+  /// Copies the dense Jacobian into J (dense, or the fixed sparsity pattern of KLU).
+  void store_jacobian(SUNMatrix J) const;
 
   IntegratorSettings settings_;
   OdeSystem* system_ = nullptr;
+  DaeSystem* dae_ = nullptr;
+  std::unique_ptr<OdeResidual> ode_residual_;
   sundials::Context context_;
   sundials::CallbackError callback_error_;
   void* ida_ = nullptr;
-  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr;
+  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr, id_nv_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
-  VectorX y_, work_y_, work_f_;
+  VectorX state_, work_y_, work_yp_, work_r_;
+  MatrixX work_jacobian_;
+  std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
   double t_ = 0.0;
 };
 

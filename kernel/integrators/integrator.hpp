@@ -16,6 +16,12 @@ enum class IntegrationMethod {
   ida         // SUNDIALS IDA, variable-order BDF (stiff problems), dense direct solver
 };
 
+/// Linear solver for IDA's Newton iterations.
+enum class LinearSolver {
+  dense,  // SUNDIALS dense LU
+  sparse  // KLU (SuiteSparse) on the Jacobian's sparsity pattern
+};
+
 struct IntegratorSettings {
   IntegrationMethod method = IntegrationMethod::ida;
   double step = 1e-3;             // s, fixed step (rk4)
@@ -23,6 +29,7 @@ struct IntegratorSettings {
   double absolute_tolerance = 1e-10;
   double max_step = 0.0;          // s, 0 = unlimited (adaptive methods)
   long max_steps_per_output = 100000;
+  LinearSolver linear_solver = LinearSolver::dense;  // ida
 };
 
 struct IntegratorStatistics {

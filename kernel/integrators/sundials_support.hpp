@@ -39,15 +39,13 @@ struct CallbackError {
   }
 };
 
-/// Evaluates f(t, y) into `derivative` for a SUNDIALS callback, so that exceptions
-/// never cross into C. A NumericalError is recoverable (return 1: the integrator
-/// retries with a smaller step, and the error is rethrown if it keeps failing);
-/// anything else is fatal (return -1).
-inline int evaluate_derivative(OdeSystem& system, double t, N_Vector y, VectorX& state, VectorX& derivative,
-                               CallbackError& error) {
+/// Runs a SUNDIALS callback body so that exceptions never cross into C. A
+/// NumericalError is recoverable (return 1: the integrator retries with a smaller
+/// step, and the error is rethrown if it keeps failing); anything else is fatal (-1).
+template <class Body>
+int guarded(CallbackError& error, Body&& body) {
   try {
-    state = map(y);
-    system.derivative(t, state, derivative);
+    body();
     return 0;
   } catch (const NumericalError&) {
     error.exception = std::current_exception();

@@ -5,17 +5,24 @@
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/constraints/projection.hpp"
 
 namespace heavesim {
 
-MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, ForwardDynamicsMethod method)
+MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSettings settings)
     : model_(std::move(model)),
-      method_(method),
+      settings_(settings),
       data_(*model_),
+      scratch_data_(*model_),
       forces_(*model_),
+      scratch_forces_(*model_),
+      total_loads_(model_->num_links(), Force::Zero()),
       size_(model_->nq + model_->nv),
       q_(VectorX::Zero(model_->nq)),
-      v_(VectorX::Zero(model_->nv)) {}
+      v_(VectorX::Zero(model_->nv)),
+      tau_total_(VectorX::Zero(model_->nv)),
+      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {}
 
 void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
   state_offsets_.push_back(size_);
@@ -31,18 +38,59 @@ VectorX MultibodySystem::initial_state(const VectorX& q0, const VectorX& v0) con
   return y;
 }
 
-void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
+void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
   const Model& model = *model_;
-  q_ = y.head(model.nq);
-  v_ = y.segment(model.nq, model.nv);
   update_positions(model, data_, q_);
   update_velocities(model, data_, q_, v_);
   forces_.clear();
   add_joint_element_forces(model, q_, v_, forces_.joint_force);
   for (std::size_t e = 0; e < elements_.size(); ++e)
     elements_[e]->apply(t, model, data_, y.segment(state_offsets_[e], elements_[e]->state_size()), forces_);
-  forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world, method_);
+}
+
+void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
+  const Model& model = *model_;
+  q_ = y.head(model.nq);
+  v_ = y.segment(model.nq, model.nv);
+  compute_stages_and_forces(t, y);
+  if (model.has_constraints()) {
+    constrained_forward_dynamics(model, data_, q_, v_, forces_.joint_force, forces_.external_force_world,
+                                 settings_.stabilization);
+    check_constraint_solution(t);
+  } else {
+    forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world, settings_.method);
+  }
   if (!data_.qdd.allFinite()) report_non_finite(t);
+}
+
+void MultibodySystem::check_constraint_solution(double t) {
+  // The KKT solve returns a least-squares answer even when J qdd = gamma has no
+  // solution; a residual beyond round-off means the configuration is singular.
+  // (J M^-1 J^T) lambda - b is J qdd minus its target.
+  const double scale = data_.kkt_rhs.cwiseAbs().maxCoeff() + data_.constraint_bias.cwiseAbs().maxCoeff() + 1e-300;
+  VectorX& mismatch = kkt_mismatch_;
+  mismatch.noalias() = data_.kkt_schur * data_.constraint_multipliers;
+  mismatch -= data_.kkt_rhs;
+  int worst = 0;
+  const double error = mismatch.cwiseAbs().maxCoeff(&worst) / scale;
+  if (!(error <= settings_.kkt_consistency_tolerance))
+    throw NumericalError(t,
+                         "the constraint equations have no solution (singular configuration): the acceleration of " +
+                             describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
+                             std::to_string(error) + ", rank " + std::to_string(data_.kkt_rank) + " of " +
+                             std::to_string(model_->num_constraint_rows) + ")",
+                         "the mechanism has reached a locked or singular position: check the loop geometry, "
+                         "the initial state and the applied loads");
+}
+
+void MultibodySystem::element_state_derivatives(double t, const VectorX& y, const Data& data,
+                                                Eigen::Ref<VectorX> zdot) const {
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const int n = elements_[e]->state_size();
+    if (n == 0) continue;
+    const int offset = state_offsets_[e] - (model_->nq + model_->nv);
+    elements_[e]->state_derivative(t, *model_, data, y.segment(state_offsets_[e], n), zdot.segment(offset, n));
+  }
 }
 
 void MultibodySystem::derivative(double t, const VectorX& y, VectorX& ydot) {
@@ -50,23 +98,42 @@ void MultibodySystem::derivative(double t, const VectorX& y, VectorX& ydot) {
   compute_accelerations(t, y);
   configuration_derivative(model, q_, v_, ydot.head(model.nq));
   ydot.segment(model.nq, model.nv) = data_.qdd;
-  for (std::size_t e = 0; e < elements_.size(); ++e) {
-    const int n = elements_[e]->state_size();
-    if (n == 0) continue;
-    elements_[e]->state_derivative(t, model, data_, y.segment(state_offsets_[e], n),
-                                   ydot.segment(state_offsets_[e], n));
-  }
+  element_state_derivatives(t, y, data_, ydot.tail(size_ - model.nq - model.nv));
 }
 
-void MultibodySystem::project(double, VectorX& y) {
-  q_ = y.head(model_->nq);
-  normalize_configuration(*model_, q_);
-  y.head(model_->nq) = q_;
+void MultibodySystem::project(double t, VectorX& y) {
+  const Model& model = *model_;
+  q_ = y.head(model.nq);
+  normalize_configuration(model, q_);
+  if (model.has_constraints()) {
+    v_ = y.segment(model.nq, model.nv);
+    const ProjectionResult result = project_to_constraints(model, data_, q_, v_, settings_.projection_tolerance,
+                                                           settings_.projection_iterations);
+    if (!result.converged) {
+      int worst = 0;
+      data_.constraint_residual.cwiseAbs().maxCoeff(&worst);
+      throw NumericalError(t,
+                           "constraint projection did not converge: |Phi| = " +
+                               std::to_string(result.position_residual) + " after " +
+                               std::to_string(result.iterations) + " iterations, worst at " +
+                               describe_constraint_row(model, worst),
+                           "the step was too large for the loop to be restored: reduce solver.step or the "
+                           "tolerances, or check for a singular configuration");
+    }
+    y.segment(model.nq, model.nv) = v_;
+  }
+  y.head(model.nq) = q_;
 }
 
 void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reactions) {
   compute_accelerations(t, y);
-  if (compute_reactions) compute_joint_wrenches(*model_, data_, forces_.external_force_world);
+  if (!compute_reactions) return;
+  total_loads_ = forces_.external_force_world;
+  if (model_->has_constraints()) {
+    tau_total_ = forces_.joint_force;
+    add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
+  }
+  compute_joint_wrenches(*model_, data_, total_loads_);
 }
 
 void MultibodySystem::report_non_finite(double t) const {

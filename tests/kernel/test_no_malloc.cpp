@@ -53,7 +53,9 @@ TEST(NoMalloc, SystemDerivativeDoesNotAllocate) {
   std::mt19937_64 random(4);
   auto model = std::make_shared<const Model>(validation::random_tree(random, validation::RandomTreeOptions{}));
   for (ForwardDynamicsMethod method : {ForwardDynamicsMethod::articulated_body, ForwardDynamicsMethod::composite_rigid_body}) {
-    MultibodySystem system(model, method);
+    SystemSettings settings;
+    settings.method = method;
+    MultibodySystem system(model, settings);
     const validation::RandomState state = validation::random_state(*model, random);
     VectorX y = system.initial_state(state.q, state.v), ydot(system.size());
     ForbidAllocation forbid;

@@ -1,0 +1,53 @@
+#pragma once
+// What IDA integrates: an implicit system F(t, y, y') = 0 with some components
+// algebraic. A system that is naturally an ODE (OdeSystem) is wrapped as
+// F = y' - f(t, y) by OdeResidual; a multibody model with closed loops provides its
+// own stabilized index-2 form (MultibodySystem, Gear-Gupta-Leimkuhler).
+//
+// The integrator-facing state stays the ODE state of OdeSystem; a DAE may carry
+// extra algebraic unknowns (multipliers) that it maps in and out.
+#include "kernel/system/ode_system.hpp"
+
+namespace heavesim {
+
+class DaeSystem {
+ public:
+  virtual ~DaeSystem() = default;
+  virtual int dae_size() const = 0;
+  /// 1 for differential components, 0 for algebraic ones (excluded from IDA's error test).
+  virtual void differential_mask(VectorX& mask) const = 0;
+  /// Consistent (y, y') at time t for the ODE state `state`.
+  virtual void dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) = 0;
+  /// The ODE state contained in y.
+  virtual void state_from_dae(const VectorX& y, VectorX& state) const = 0;
+  virtual void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) = 0;
+  /// dF/dy + cj dF/dy'; returns false to let the integrator approximate it.
+  virtual bool jacobian(double /*t*/, const VectorX& /*y*/, const VectorX& /*yp*/, double /*cj*/,
+                        MatrixX& /*J*/) {
+    return false;
+  }
+};
+
+/// F(t, y, y') = y' - f(t, y) for an OdeSystem; every component differential.
+class OdeResidual : public DaeSystem {
+ public:
+  explicit OdeResidual(OdeSystem& system) : system_(system), f_(system.size()) {}
+  int dae_size() const override { return system_.size(); }
+  void differential_mask(VectorX& mask) const override { mask.setOnes(system_.size()); }
+  void dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) override {
+    y = state;
+    yp.resize(state.size());
+    system_.derivative(t, y, yp);
+  }
+  void state_from_dae(const VectorX& y, VectorX& state) const override { state = y; }
+  void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override {
+    system_.derivative(t, y, f_);
+    r = yp - f_;
+  }
+
+ private:
+  OdeSystem& system_;
+  VectorX f_;
+};
+
+}  // namespace heavesim
