@@ -7,6 +7,7 @@
 
 #include "app/case/input_error.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
+#include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
 
@@ -23,6 +24,20 @@ struct SolverSettings {
   double t_start = 0.0;  // s
   double t_end = 10.0;   // s
   ForwardDynamicsMethod dynamics = ForwardDynamicsMethod::articulated_body;
+  /// Largest |Phi| accepted at assembly and after each projection [m or rad].
+  double constraint_tolerance = 1e-10;
+};
+
+/// A force element declared in `forces:`.
+struct ForceDefinition {
+  enum class Type { spring_damper, point_force };
+  std::string name;
+  Type type = Type::spring_damper;
+  std::string body_a, body_b;         // spring_damper ends; point_force: body_a
+  Vector3 point_a = Vector3::Zero();  // m, body a's frame
+  Vector3 point_b = Vector3::Zero();  // m, body b's frame
+  SpringDamperParameters spring;
+  Vector3 force_world = Vector3::Zero();  // N, point_force
 };
 
 struct OutputSettings {
@@ -42,6 +57,10 @@ struct CaseDefinition {
   Vector3 gravity = Vector3(0.0, 0.0, -9.81);
   std::vector<BodyDefinition> bodies;
   std::vector<JointDefinition> joints;
+  std::vector<LoopJointDefinition> loop_joints;
+  std::vector<DistanceConstraintDefinition> distance_constraints;
+  std::vector<CouplerDefinition> couplers;
+  std::vector<ForceDefinition> forces;
   std::map<std::string, JointInitialState> initial_states;  // by joint name
   SolverSettings solver;
   OutputSettings output;
@@ -49,7 +68,9 @@ struct CaseDefinition {
   /// Source positions of bodies[i] / joints[i] and of their fields, by name.
   std::map<std::string, std::map<std::string, SourceLocation>> body_field_locations;
   std::map<std::string, std::map<std::string, SourceLocation>> joint_field_locations;
-  std::map<std::string, std::string> body_paths, joint_paths;
+  std::map<std::string, std::map<std::string, SourceLocation>> constraint_field_locations;  // loop joints too
+  std::map<std::string, std::map<std::string, SourceLocation>> force_field_locations;
+  std::map<std::string, std::string> body_paths, joint_paths, constraint_paths, force_paths;
 };
 
 /// Loads, composes (includes, --set overrides) and checks a case file. Throws

@@ -1,5 +1,6 @@
 // Reads the case schema documented in docs/case-format.md.
 #include <cmath>
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -116,8 +117,9 @@ void read_bodies(const NodeReader& section, CaseDefinition& definition) {
 
 // ---------------------------------------------------------------- joints
 
-/// Reads `type` and the axes it needs into the definition.
-void read_joint_kind(const NodeReader& joint, JointDefinition& def) {
+/// Reads `type` and the axes it needs into a joint or loop-joint definition.
+template <class Definition>
+void read_joint_kind(const NodeReader& joint, Definition& def) {
   const std::string type =
       joint["type"].choice({"fixed", "revolute", "prismatic", "cylindrical", "universal", "spherical", "free"});
   def.kind = type == "fixed"         ? JointKind::fixed
@@ -248,41 +250,132 @@ JointLimits read_limits(const NodeReader& reader, const JointType& type, const s
   return limits;
 }
 
-void read_joints(const NodeReader& section, CaseDefinition& definition) {
-  std::set<std::string> names;
+/// Where each present key of `item` sits in the file, for errors found later.
+std::map<std::string, SourceLocation> field_locations(const NodeReader& item,
+                                                      std::initializer_list<std::string> keys) {
+  std::map<std::string, SourceLocation> fields;
+  for (const std::string& key : keys)
+    if (item.has(key)) fields[key] = item[key].location();
+  return fields;
+}
+
+/// parent, child and the joint frame on each.
+template <class Definition>
+void read_joint_placement(const NodeReader& joint, Definition& def) {
+  def.parent = joint["parent"].text();
+  def.child = joint["child"].text();
+  def.X_parent_joint = read_frame(joint.optional("parent_frame"));
+  def.X_child_joint = read_frame(joint.optional("child_frame"));
+}
+
+/// A name not used before by any joint, loop joint, constraint or force.
+std::string read_unique_name(const NodeReader& item, std::set<std::string>& names) {
+  const NodeReader name_reader = item["name"];
+  const std::string name = name_reader.text();
+  if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique name");
+  return name;
+}
+
+void read_joints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& joint : section.items()) {
     joint.expect_map({"name", "type", "parent", "child", "parent_frame", "child_frame", "axis", "axes", "initial",
                       "spring", "limits", "description"});
-    const NodeReader name_reader = joint["name"];
-    const std::string name = name_reader.text();
-    if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique joint name");
+    const std::string name = read_unique_name(joint, names);
     JointDefinition def;
     def.name = name;
     read_joint_kind(joint, def);
     const JointType type = canonical_joint_type(def.kind);
     const std::string type_name = joint_type_name(type);
-    def.parent = joint["parent"].text();
-    def.child = joint["child"].text();
-    def.X_parent_joint = read_frame(joint.optional("parent_frame"));
-    def.X_child_joint = read_frame(joint.optional("child_frame"));
+    read_joint_placement(joint, def);
     if (auto spring = joint.optional("spring")) def.spring = read_spring(*spring, type, type_name);
     if (auto limits = joint.optional("limits")) def.limits = read_limits(*limits, type, type_name);
     definition.initial_states[name] = read_initial_state(joint.optional("initial"), type);
     definition.joint_paths[name] = joint.path();
-    auto& fields = definition.joint_field_locations[name];
-    fields["name"] = name_reader.location();
-    fields["parent"] = joint["parent"].location();
-    fields["child"] = joint["child"].location();
-    if (joint.has("spring")) fields["spring"] = joint["spring"].location();
-    if (joint.has("limits")) fields["limits"] = joint["limits"].location();
+    definition.joint_field_locations[name] = field_locations(joint, {"name", "parent", "child", "spring", "limits"});
     definition.joints.push_back(std::move(def));
+  }
+}
+
+// ---------------------------------------------------------------- loops, constraints, forces
+
+void read_loop_joints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
+  for (const NodeReader& joint : section.items()) {
+    joint.expect_map({"name", "type", "parent", "child", "parent_frame", "child_frame", "axis", "axes", "description"});
+    LoopJointDefinition def;
+    def.name = read_unique_name(joint, names);
+    read_joint_kind(joint, def);
+    read_joint_placement(joint, def);
+    definition.constraint_paths[def.name] = joint.path();
+    definition.constraint_field_locations[def.name] =
+        field_locations(joint, {"name", "type", "parent", "child", "axis", "axes"});
+    definition.loop_joints.push_back(std::move(def));
+  }
+}
+
+void read_constraints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
+  for (const NodeReader& item : section.items()) {
+    const std::string type = item["type"].choice({"distance", "coupler"});
+    const std::string name = read_unique_name(item, names);
+    if (type == "distance") {
+      item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "distance", "description"});
+      DistanceConstraintDefinition def;
+      def.name = name;
+      def.body_a = item["body_a"].text();
+      def.body_b = item["body_b"].text();
+      if (auto point = item.optional("point_a")) def.point_a = point->vector3();
+      if (auto point = item.optional("point_b")) def.point_b = point->vector3();
+      def.distance = item["distance"].positive_number();
+      definition.distance_constraints.push_back(std::move(def));
+    } else {
+      item.expect_map({"name", "type", "joint_a", "joint_b", "ratio", "offset", "description"});
+      CouplerDefinition def;
+      def.name = name;
+      def.joint_a = item["joint_a"].text();
+      def.joint_b = item["joint_b"].text();
+      def.ratio = item.number_or("ratio", 1.0);
+      def.offset = item.number_or("offset", 0.0);
+      definition.couplers.push_back(std::move(def));
+    }
+    definition.constraint_paths[name] = item.path();
+    definition.constraint_field_locations[name] =
+        field_locations(item, {"name", "type", "body_a", "body_b", "distance", "joint_a", "joint_b", "ratio"});
+  }
+}
+
+void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
+  for (const NodeReader& item : section.items()) {
+    ForceDefinition def;
+    def.type = item["type"].choice({"spring_damper", "point_force"}) == "spring_damper"
+                   ? ForceDefinition::Type::spring_damper
+                   : ForceDefinition::Type::point_force;
+    def.name = read_unique_name(item, names);
+    if (def.type == ForceDefinition::Type::spring_damper) {
+      item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "stiffness", "damping",
+                       "rest_length", "description"});
+      def.body_a = item["body_a"].text();
+      def.body_b = item["body_b"].text();
+      if (auto point = item.optional("point_b")) def.point_b = point->vector3();
+      def.spring.stiffness = item.optional("stiffness") ? item["stiffness"].non_negative_number() : 0.0;
+      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
+      def.spring.rest_length = item["rest_length"].non_negative_number();
+    } else {
+      item.expect_map({"name", "type", "body", "point", "force", "description"});
+      def.body_a = item["body"].text();
+      def.force_world = item["force"].vector3();
+    }
+    if (auto point = item.optional(def.type == ForceDefinition::Type::spring_damper ? "point_a" : "point"))
+      def.point_a = point->vector3();
+    definition.force_paths[def.name] = item.path();
+    definition.force_field_locations[def.name] = field_locations(item, {"name", "type", "body_a", "body_b", "body"});
+    definition.forces.push_back(std::move(def));
   }
 }
 
 // ---------------------------------------------------------------- solver, output
 
 void read_solver(const NodeReader& reader, CaseDefinition& definition) {
-  reader.expect_map({"integrator", "t_start", "t_end", "step", "rtol", "atol", "max_step", "max_steps", "dynamics"});
+  reader.expect_map({"integrator", "t_start", "t_end", "step", "rtol", "atol", "max_step", "max_steps", "dynamics",
+                     "linear_solver", "constraint_tolerance"});
   SolverSettings& solver = definition.solver;
   if (auto integrator = reader.optional("integrator")) {
     const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida"});
@@ -314,6 +407,14 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
   if (auto max_steps = reader.optional("max_steps")) {
     solver.integrator.max_steps_per_output = max_steps->integer();
     if (solver.integrator.max_steps_per_output <= 0) max_steps->fail("a positive whole number");
+  }
+  if (auto linear_solver = reader.optional("linear_solver"))
+    solver.integrator.linear_solver =
+        linear_solver->choice({"dense", "sparse"}) == "dense" ? LinearSolver::dense : LinearSolver::sparse;
+  if (auto tolerance = reader.optional("constraint_tolerance")) {
+    solver.constraint_tolerance = tolerance->positive_number();
+    if (solver.constraint_tolerance < 1e-14)
+      tolerance->fail("a tolerance below round-off of the constraint equations", "constraint_tolerance >= 1e-14");
   }
   if (auto dynamics = reader.optional("dynamics"))
     solver.dynamics = dynamics->choice({"articulated_body", "composite_rigid_body"}) == "articulated_body"
@@ -371,7 +472,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   definition.resolved_yaml = to_yaml_text(tree);
   ExpressionContext expressions;
   const NodeReader root(tree, "", expressions);
-  root.expect_map({"name", "description", "parameters", "environment", "bodies", "joints", "solver", "output"});
+  root.expect_map({"name", "description", "parameters", "environment", "bodies", "joints", "loop_joints",
+                   "constraints", "forces", "solver", "output"});
 
   definition.name = root.optional("name") ? root["name"].text() : std::filesystem::path(path).stem().string();
   if (auto description = root.optional("description")) definition.description = description->text();
@@ -381,16 +483,24 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
     if (auto gravity = environment->optional("gravity")) definition.gravity = gravity->vector3();
   }
   read_bodies(root["bodies"], definition);
-  read_joints(root["joints"], definition);
+  std::set<std::string> names;  // joints, loop joints, constraints and forces share one name space
+  read_joints(root["joints"], definition, names);
+  if (auto section = root.optional("loop_joints")) read_loop_joints(*section, definition, names);
+  if (auto section = root.optional("constraints")) read_constraints(*section, definition, names);
+  if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   read_solver(root["solver"], definition);
   read_output(root.optional("output"), definition);
   return definition;
 }
 
 InputError to_input_error(const CaseDefinition& definition, const ModelError& error) {
-  const bool body = error.kind() == ModelError::ItemKind::body;
-  const auto& paths = body ? definition.body_paths : definition.joint_paths;
-  const auto& locations = body ? definition.body_field_locations : definition.joint_field_locations;
+  const ModelError::ItemKind kind = error.kind();
+  const auto& paths = kind == ModelError::ItemKind::body    ? definition.body_paths
+                      : kind == ModelError::ItemKind::joint ? definition.joint_paths
+                                                            : definition.constraint_paths;
+  const auto& locations = kind == ModelError::ItemKind::body    ? definition.body_field_locations
+                          : kind == ModelError::ItemKind::joint ? definition.joint_field_locations
+                                                                : definition.constraint_field_locations;
   SourceLocation location{definition.source_path, 0, 0};
   std::string key_path;
   if (auto it = paths.find(error.item()); it != paths.end()) key_path = it->second + "." + error.field();

@@ -13,9 +13,10 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
 
   fmt::print("case '{}' ({})\n", definition.name, case_path);
   if (!definition.description.empty()) fmt::print("  {}\n", definition.description);
-  fmt::print("model: {} bodies, {} joints, {} degrees of freedom (nq = {}, nv = {}), 0 kinematic loops, "
+  fmt::print("model: {} bodies, {} joints, {} degrees of freedom (nq = {}, nv = {}), {} loop constraints, "
              "total mass {:.6g} kg\n",
-             model.num_links() - 1, model.num_links() - 1, model.nv, model.nq, model.nv, model.total_mass());
+             model.num_links() - 1, model.num_links() - 1, model.nv, model.nq, model.nv, model.constraints.size(),
+             model.total_mass());
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Link& link = model.links[i];
@@ -23,6 +24,7 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
                joint_type_name(joint.type), model.links[joint.parent].name, link.name, joint.nv,
                joint.spring ? ", spring-damper" : "", joint.limits ? ", limits" : "", link.inertia.mass());
   }
+  print_loop_summary(scene);
   fmt::print("forces: gravity [{:g}, {:g}, {:g}] m/s^2", model.gravity.x(), model.gravity.y(), model.gravity.z());
   int springs = 0, limits = 0;
   for (int i = 1; i < model.num_links(); ++i) {
@@ -47,7 +49,10 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
              output.joints ? " joints" : "", output.reactions ? " reactions (one extra RNEA pass per sample)" : "",
              output.energy ? " energy" : "");
   fmt::print("state size {}: evaluated per step: kinematics, {}, {}\n", scene.system->size(),
-             solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA" : "CRBA + RNEA",
+             model.has_constraints() ? "CRBA + constrained KKT solve (projection after explicit steps; IDA: "
+                                       "GGL index-2 residual, one RNEA pass)"
+             : solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA"
+                                                                          : "CRBA + RNEA",
              springs + limits ? "joint elements" : "no joint elements");
   return 0;
 }

@@ -16,6 +16,10 @@ struct RunOptions {
 
 int run_command(const RunOptions& options);
 int check_command(const std::string& case_path, const std::vector<std::string>& overrides);
+struct Scene;
+/// Loops, rank, redundant equations and assembly of a scene (nothing for a tree).
+void print_loop_summary(const Scene& scene);
+
 int validate_command(const std::vector<std::string>& names, bool list_only);
 
 }  // namespace heavesim

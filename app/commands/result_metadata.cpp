@@ -47,6 +47,25 @@ void write_result_metadata(ResultFile& file, const CaseDefinition& definition) {
   file.flush();
 }
 
+void write_constraint_summary(ResultFile& file, const Scene& scene) {
+  const Model& model = *scene.model;
+  if (!model.has_constraints()) return;
+  const Assembly& assembly = scene.assembly;
+  file.set_attribute("/constraints", "rows", static_cast<long>(model.num_constraint_rows));
+  file.set_attribute("/constraints", "rank", static_cast<long>(assembly.rank.rank));
+  file.set_attribute("/constraints", "redundant_rows", describe_redundant_rows(model, assembly.rank));
+  file.set_attribute("/constraints", "multipliers",
+                     std::string(assembly.rank.redundant_rows.empty()
+                                     ? "unique"
+                                     : "minimum-norm: the split of reactions along redundant rows is not unique; "
+                                       "their resultant is"));
+  file.set_attribute("/constraints", "assembly_newton_iterations", static_cast<long>(assembly.newton_iterations));
+  file.set_attribute("/constraints", "assembly_largest_position_change", assembly.largest_position_change);
+  file.set_attribute("/constraints", "assembly_largest_speed_change", assembly.largest_speed_change);
+  file.set_attribute("/constraints", "assembly_position_residual", assembly.position_residual);
+  file.flush();
+}
+
 void write_run_statistics(ResultFile& file, const IntegratorStatistics& statistics, double wall_seconds,
                           double simulated_seconds) {
   file.set_attribute("/summary", "integrator_steps", statistics.steps);

@@ -2,6 +2,7 @@
 // Root attributes and run statistics of a result file (the contract in docs/result-file.md).
 #include "app/case/case_definition.hpp"
 #include "app/output/result_file.hpp"
+#include "app/scene/scene.hpp"
 #include "kernel/integrators/integrator.hpp"
 
 namespace heavesim {
@@ -10,6 +11,9 @@ namespace heavesim {
 /// and /case/yaml (the resolved case text).
 void write_result_metadata(ResultFile& file, const CaseDefinition& definition);
 
+/// Closed loops: rows, rank, redundant rows, how multipliers were chosen, assembly
+/// (attributes of /constraints); nothing for a tree.
+void write_constraint_summary(ResultFile& file, const Scene& scene);
 /// Integrator statistics and timing in /summary.
 void write_run_statistics(ResultFile& file, const IntegratorStatistics& statistics, double wall_seconds,
                           double simulated_seconds);

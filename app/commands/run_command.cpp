@@ -59,6 +59,7 @@ class ProgressLine {
 int run_command(const RunOptions& options) {
   const CaseDefinition definition = load_case(options.case_path, options.overrides);
   Scene scene = build_scene(definition);
+  if (!options.quiet) print_loop_summary(scene);
 
   const std::string output_path =
       options.output_path.empty() ? "results/" + definition.name + ".h5" : options.output_path;
@@ -66,6 +67,7 @@ int run_command(const RunOptions& options) {
   if (!output_directory.empty()) std::filesystem::create_directories(output_directory);
   ResultFile file(output_path);
   write_result_metadata(file, definition);
+  write_constraint_summary(file, scene);
 
   std::optional<CsvWriter> csv;
   if (!options.csv_directory.empty()) {
@@ -128,6 +130,10 @@ int run_command(const RunOptions& options) {
                definition.name, solver.t_end - solver.t_start, wall, (solver.t_end - solver.t_start) / wall,
                statistics.steps, statistics.rhs_evaluations, recorder.samples(), output_path);
     if (definition.output.energy) fmt::print("  relative energy drift {:.3g}\n", recorder.relative_energy_drift());
+    if (scene.model->has_constraints())
+      fmt::print("  constraint drift: max |Phi| {:.3g}, max |J v| {:.3g}\n",
+                 recorder.channel_maximum("/signals/constraint_residual"),
+                 recorder.channel_maximum("/signals/constraint_velocity_residual"));
     for (const auto& [joint, peak] : recorder.peak_reactions())
       fmt::print("  peak reaction force at joint '{}': {:.6g} N\n", joint, peak);
   }

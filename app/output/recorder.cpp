@@ -6,6 +6,7 @@
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/constraints/constraint_equations.hpp"
 
 namespace heavesim {
 namespace {
@@ -142,6 +143,8 @@ void Recorder::define_channels(const CaseDefinition& definition) {
     }
   }
 
+  define_constraint_channels(output);
+
   if (output.energy) {
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
          [&system](double, double* out) { out[0] = kinetic_energy(system.model(), system.data()); }});
@@ -155,6 +158,52 @@ void Recorder::define_channels(const CaseDefinition& definition) {
                     gravity_potential_energy(system.model(), system.data()) +
                     joint_elastic_energy(system.model(), system.configuration());
          }});
+  }
+}
+
+void Recorder::define_constraint_channels(const OutputSettings& output) {
+  const Model& model = *scene_.model;
+  if (!model.has_constraints()) return;
+  const MultibodySystem& system = *scene_.system;
+  const std::vector<std::string> xyz = {".x", ".y", ".z"};
+  phi_.resize(model.num_constraint_rows);
+  constraint_velocity_.resize(model.num_constraint_rows);
+  // Drift is always recorded: it is how a user sees that a loop stayed closed.
+  add({"/signals/constraint_residual", 0, "m or rad", "max |Phi(q)| over all constraint rows", {},
+       [this, &system](double, double* out) {
+         constraint_residual(system.model(), system.data(), system.configuration(), phi_);
+         out[0] = phi_.cwiseAbs().maxCoeff();
+       }});
+  add({"/signals/constraint_velocity_residual", 0, "m/s or rad/s", "max |J v| over all constraint rows", {},
+       [this, &system](double, double* out) {
+         constraint_velocity_.noalias() = system.data().constraint_jacobian * system.velocity();
+         out[0] = constraint_velocity_.cwiseAbs().maxCoeff();
+       }});
+  if (!output.reactions) return;
+  for (const Constraint& constraint : model.constraints) {
+    const std::string base = "/constraints/" + constraint.name;
+    const int rows = static_cast<int>(constraint.rows.size());
+    std::vector<std::string> labels;
+    for (const ConstraintRow& row : constraint.rows) labels.push_back("." + row.description);
+    add({base + "/multipliers", rows, "N, N m or N/m",
+         "Lagrange multipliers lambda of the constraint rows (M qdd + C = tau + J^T lambda); "
+         "minimum-norm where rows are redundant",
+         labels, [&system, &constraint, rows](double, double* out) {
+           Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
+         }});
+    if (constraint.type == Constraint::Type::coupler) continue;
+    // The wrench on side B (the loop joint's child side) about frame B's origin.
+    auto wrench_at_b = [&system, &constraint]() {
+      const Force f = constraint_wrench(system.model(), system.data(), constraint, system.data().constraint_multipliers);
+      const Vector3 origin = constraint_frame_b(system.data(), constraint).translation();
+      return std::pair<Vector3, Vector3>(f.linear(), f.angular() - origin.cross(f.linear()));
+    };
+    add({base + "/reaction_force", 3, "N",
+         "force exerted by side A (parent/body_a) on side B (child/body_b) at frame B's origin, world axes", xyz,
+         [wrench_at_b](double, double* out) { map3(out) = wrench_at_b().first; }});
+    add({base + "/reaction_moment", 3, "N m",
+         "moment exerted by side A on side B about frame B's origin, world axes", xyz,
+         [wrench_at_b](double, double* out) { map3(out) = wrench_at_b().second; }});
   }
 }
 
@@ -182,6 +231,12 @@ void Recorder::record(double t, const VectorX& y) {
   const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
   if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   ++samples_;
+}
+
+double Recorder::channel_maximum(const std::string& path) const {
+  for (const Channel& channel : channels_)
+    if (channel.path == path) return channel.statistics.maximum()[0];
+  return std::nan("");
 }
 
 void Recorder::finish() {

@@ -25,6 +25,8 @@ class Recorder {
   void finish();
 
   long samples() const { return samples_; }
+  /// Largest value recorded in column 0 of a channel, or NaN if there is no such channel.
+  double channel_maximum(const std::string& path) const;
   /// Largest |E(t) - E(0)| / max(|E(0)|, max kinetic energy) seen so far (energy channel only).
   double relative_energy_drift() const { return energy_drift_; }
   /// Largest reaction-force magnitude [N] per joint, in model joint order.
@@ -43,6 +45,8 @@ class Recorder {
   };
   void add(Channel channel);
   void define_channels(const CaseDefinition& definition);
+  /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
+  void define_constraint_channels(const OutputSettings& output);
 
   Scene& scene_;
   ResultFile* file_;
@@ -50,6 +54,7 @@ class Recorder {
   std::vector<Channel> channels_;
   bool needs_reactions_ = false;
   std::vector<double> row_, csv_row_;
+  VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
   std::vector<std::pair<std::string, double>> peak_reactions_;

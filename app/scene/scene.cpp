@@ -1,12 +1,89 @@
 #include "app/scene/scene.hpp"
 
+#include <fmt/format.h>
+
+#include "kernel/elements/point_force.hpp"
+#include "kernel/elements/spring_damper.hpp"
+
 namespace heavesim {
+namespace {
+
+InputError force_error(const CaseDefinition& definition, const std::string& force, const std::string& field,
+                       const std::string& found, const std::string& expected) {
+  SourceLocation location{definition.source_path, 0, 0};
+  const auto& fields = definition.force_field_locations.at(force);
+  if (auto it = fields.find(field); it != fields.end()) location = it->second;
+  return InputError(location, definition.force_paths.at(force) + "." + field, found, expected);
+}
+
+BodyPoint body_point(const CaseDefinition& definition, const Model& model, const ForceDefinition& force,
+                     const std::string& field, const std::string& body, const Vector3& point) {
+  if (body == ModelBuilder::ground_name) return {0, point};
+  if (model.link_index(body) < 0)
+    throw force_error(definition, force.name, field, "'" + body + "', which is not a body",
+                      "'ground' or the name of a body");
+  return BodyPoint::on_body(model, body, point);
+}
+
+void add_force_elements(const CaseDefinition& definition, const Model& model, MultibodySystem& system) {
+  for (const ForceDefinition& force : definition.forces) {
+    if (force.type == ForceDefinition::Type::point_force) {
+      system.add_force_element(std::make_unique<PointForce>(
+          force.name, body_point(definition, model, force, "body", force.body_a, force.point_a), force.force_world));
+      continue;
+    }
+    const BodyPoint a = body_point(definition, model, force, "body_a", force.body_a, force.point_a);
+    const BodyPoint b = body_point(definition, model, force, "body_b", force.body_b, force.point_b);
+    if (a.link == b.link)
+      throw force_error(definition, force.name, "body_b", "both ends on '" + force.body_a + "'",
+                        "two different bodies");
+    system.add_force_element(std::make_unique<SpringDamper>(force.name, a, b, force.spring));
+  }
+}
+
+/// Newton iterations from the user's state onto Phi = 0, J v = 0 (projection.hpp).
+/// A state that does not assemble is bad input: the loop cannot close there.
+Assembly assemble(const CaseDefinition& definition, const Model& model, Data& data, VectorX& q, VectorX& v) {
+  Assembly assembly;
+  const VectorX q_user = q, v_user = v;
+  const ProjectionResult result =
+      project_to_constraints(model, data, q, v, definition.solver.constraint_tolerance, 50);
+  assembly.newton_iterations = result.iterations;
+  assembly.position_residual = result.position_residual;
+  if (!result.converged) {
+    int worst = 0;
+    data.constraint_residual.cwiseAbs().maxCoeff(&worst);
+    const std::string row = describe_constraint_row(model, worst);
+    const std::string name = row.substr(row.find('\'') + 1, row.find('\'', row.find('\'') + 1) - row.find('\'') - 1);
+    SourceLocation location{definition.source_path, 0, 0};
+    std::string key_path = "constraints";
+    if (auto it = definition.constraint_field_locations.find(name); it != definition.constraint_field_locations.end())
+      location = it->second.at("name");
+    if (auto it = definition.constraint_paths.find(name); it != definition.constraint_paths.end()) key_path = it->second;
+    throw InputError(location, key_path,
+                     fmt::format("an initial state where {} cannot close: |Phi| = {:.3g} after {} Newton iterations",
+                                 row, result.position_residual, result.iterations),
+                     fmt::format("initial joint coordinates near a configuration that satisfies every loop "
+                                 "(|Phi| <= solver.constraint_tolerance = {:g})",
+                                 definition.solver.constraint_tolerance));
+  }
+  assembly.largest_position_change = (q - q_user).cwiseAbs().maxCoeff();
+  assembly.largest_speed_change = model.nv > 0 ? (v - v_user).cwiseAbs().maxCoeff() : 0.0;
+  assembly.rank = analyse_constraint_rank(model, data);
+  return assembly;
+}
+
+}  // namespace
 
 Scene build_scene(const CaseDefinition& definition) {
   ModelBuilder builder;
   builder.set_gravity(definition.gravity);
   for (const BodyDefinition& body : definition.bodies) builder.add_body(body);
   for (const JointDefinition& joint : definition.joints) builder.add_joint(joint);
+  for (const LoopJointDefinition& joint : definition.loop_joints) builder.add_loop_joint(joint);
+  for (const DistanceConstraintDefinition& constraint : definition.distance_constraints)
+    builder.add_distance_constraint(constraint);
+  for (const CouplerDefinition& coupler : definition.couplers) builder.add_coupler(coupler);
 
   Scene scene;
   try {
@@ -17,7 +94,9 @@ Scene build_scene(const CaseDefinition& definition) {
   const Model& model = *scene.model;
   SystemSettings settings;
   settings.method = definition.solver.dynamics;
+  settings.projection_tolerance = definition.solver.constraint_tolerance;
   scene.system = std::make_unique<MultibodySystem>(scene.model, settings);
+  add_force_elements(definition, model, *scene.system);
 
   VectorX q0 = model.neutral_configuration();
   VectorX v0 = VectorX::Zero(model.nv);
@@ -28,8 +107,15 @@ Scene build_scene(const CaseDefinition& definition) {
     q0.segment(joint.q_index, joint.nq) = it->second.q;
     v0.segment(joint.v_index, joint.nv) = it->second.v;
   }
+  if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
   scene.initial_state = scene.system->initial_state(q0, v0);
   return scene;
+}
+
+std::string describe_redundant_rows(const Model& model, const ConstraintRank& rank) {
+  std::string text;
+  for (int row : rank.redundant_rows) text += (text.empty() ? "" : "; ") + describe_constraint_row(model, row);
+  return text;
 }
 
 }  // namespace heavesim

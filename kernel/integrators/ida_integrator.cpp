@@ -80,11 +80,9 @@ void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) 
   }
   t_ = t0;
   state_ = y0;
+  dae_->dae_initial_values(t0, y0, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
   const int n = dae_->dae_size();
-  work_y_.resize(n);
-  work_yp_.resize(n);
   work_r_.resize(n);
-  dae_->dae_initial_values(t0, y0, work_y_, work_yp_);
   y_nv_ = N_VNew_Serial(n, context_);
   yp_nv_ = N_VNew_Serial(n, context_);
   id_nv_ = N_VNew_Serial(n, context_);

@@ -28,9 +28,13 @@ ModelError joint_error(const std::string& joint, const std::string& field, const
 
 void check_body(const BodyDefinition& body) {
   const Inertia& I = body.inertia;
-  if (!(I.mass() > 0.0) || !std::isfinite(I.mass()))
-    throw body_error(body.name, "mass", format_number(I.mass()), "a positive, finite mass in kg");
+  if (!(I.mass() >= 0.0) || !std::isfinite(I.mass()))
+    throw body_error(body.name, "mass", format_number(I.mass()), "a positive, finite mass in kg (or 0 for a massless connector)");
   const Matrix3& J = I.inertia_com();
+  // A massless connector (a slider carriage whose mass is lumped elsewhere) has no
+  // rotational inertia either; it must carry other bodies (checked in build()).
+  if (I.mass() == 0.0 && !J.isZero(0.0))
+    throw body_error(body.name, "inertia", "a rotational inertia on a massless body", "zero inertia when mass = 0");
   if (!J.allFinite()) throw body_error(body.name, "inertia", "non-finite entries", "finite numbers (kg m^2)");
   const Vector3 principal = Eigen::SelfAdjointEigenSolver<Matrix3>(J).eigenvalues();
   const double scale = std::max(principal.cwiseAbs().maxCoeff(), 1e-300);
@@ -205,6 +209,10 @@ Model ModelBuilder::build() const {
     if (!joint_of_child.count(body.name))
       throw body_error(body.name, "name", "a body that no joint attaches",
                        "a joint with child '" + body.name + "' (use a free joint for a floating body)");
+  for (const BodyDefinition& body : bodies_)
+    if (body.inertia.mass() == 0.0 && !joints_of_parent.count(body.name))
+      throw body_error(body.name, "mass", "0 on a body that carries nothing (its motion would have no inertia)",
+                       "a positive mass, or other bodies attached to this massless connector");
 
   Model model;
   model.gravity = gravity_;

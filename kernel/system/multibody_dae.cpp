@@ -7,6 +7,13 @@
 //   F_mu = Phi(q)                           position-level constraints
 // lambda and mu are algebraic (excluded from IDA's error test).
 //
+// Redundant constraint rows (a planar loop closed by a 3-D revolute joint, two
+// parallel rods on one block) would make the Newton matrix singular: the DAE keeps
+// only the independent rows found by the rank-revealing QR at the initial state
+// (analyse_constraint_rank), as multibody codes do; the others then hold by
+// themselves. Reported multipliers still come from evaluate(), the minimum-norm
+// solution over all rows.
+//
 // The Newton matrix dF/dy + cj dF/dy' is assembled from analytic parts -- the mass
 // matrix (CRBA), dID/dq and dID/dv (inverse_dynamics_derivatives), J, Phi_q = J N+,
 // N -- and forward differences only where the kernel cannot differentiate: the force
@@ -14,11 +21,13 @@
 // J^T lambda and J v. Derivatives in q are taken along tangent directions and mapped
 // to the raw coordinates with N+ (unit quaternions: 4 N^T).
 #include <Eigen/Cholesky>
+#include <Eigen/QR>
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/inverse_dynamics_derivatives.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/constraints/projection.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
@@ -30,19 +39,35 @@ void MultibodySystem::differential_mask(VectorX& mask) const {
 
 void MultibodySystem::dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) {
   const Model& model = *model_;
-  const int m = model.num_constraint_rows;
+  VectorX ode_rate(size_);
+  derivative(t, state, ode_rate);  // qdd and, with loops, lambda from the KKT solve
+  dae_rows_.clear();
+  if (model.has_constraints()) {
+    // The ODE evaluation left the position stage at q and lambda of all rows.
+    const ConstraintRank rank = analyse_constraint_rank(model, data_);
+    std::vector<bool> redundant(model.num_constraint_rows, false);
+    for (int row : rank.redundant_rows) redundant[row] = true;
+    for (int row = 0; row < model.num_constraint_rows; ++row)
+      if (!redundant[row]) dae_rows_.push_back(row);
+  }
+  const int kept = dae_rows();
   y.setZero(dae_size());
   yp.setZero(dae_size());
   y.head(size_) = state;
-  VectorX ode_rate(size_);
-  derivative(t, state, ode_rate);  // qdd and, with loops, lambda from the KKT solve
   yp.head(size_) = ode_rate;
-  if (m > 0) y.segment(size_, m) = data_.constraint_multipliers;  // mu = 0
+  dae_jacobian_.resize(kept, model.nv);
+  dae_constraint_.resize(kept);
+  dae_jacobian_plus_.resize(kept, model.nv);
+  if (kept == 0) return;
+  // Multipliers of the kept rows giving the same constraint force J^T lambda (mu = 0).
+  const MatrixX J_kept = data_.constraint_jacobian(dae_rows_, Eigen::all);
+  const VectorX generalized_force = data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
+  y.segment(size_, kept) = J_kept.transpose().colPivHouseholderQr().solve(generalized_force);
 }
 
 void MultibodySystem::residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) {
   const Model& model = *model_;
-  const int nq = model.nq, nv = model.nv, nz = size_ - nq - nv, m = model.num_constraint_rows;
+  const int nq = model.nq, nv = model.nv, nz = size_ - nq - nv, m = dae_rows();
   q_ = y.head(nq);
   v_ = y.segment(nq, nv);
   dae_vdot_ = yp.segment(nq, nv);
@@ -53,10 +78,12 @@ void MultibodySystem::residual(double t, const VectorX& y, const VectorX& yp, Ve
   if (m > 0) {
     constraint_jacobian(model, data_, data_.constraint_jacobian);
     constraint_residual(model, data_, q_, data_.constraint_residual);
-    r.segment(nq, nv).noalias() -= data_.constraint_jacobian.transpose() * y.segment(size_, m);
-    dae_w_.noalias() -= data_.constraint_jacobian.transpose() * y.segment(size_ + m, m);
-    r.segment(size_, m).noalias() = data_.constraint_jacobian * v_;
-    r.segment(size_ + m, m) = data_.constraint_residual;
+    dae_jacobian_ = data_.constraint_jacobian(dae_rows_, Eigen::all);
+    dae_constraint_ = data_.constraint_residual(dae_rows_);
+    r.segment(nq, nv).noalias() -= dae_jacobian_.transpose() * y.segment(size_, m);
+    dae_w_.noalias() -= dae_jacobian_.transpose() * y.segment(size_ + m, m);
+    r.segment(size_, m).noalias() = dae_jacobian_ * v_;
+    r.segment(size_ + m, m) = dae_constraint_;
   }
   dae_qdot_.resize(nq);
   configuration_derivative(model, q_, dae_w_, dae_qdot_);
@@ -117,7 +144,7 @@ bool MultibodySystem::has_applied_state_dependence() const {
 
 bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) {
   const Model& model = *model_;
-  const int nq = model.nq, nv = model.nv, nz = size_ - nq - nv, m = model.num_constraint_rows;
+  const int nq = model.nq, nv = model.nv, nz = size_ - nq - nv, m = dae_rows();
   const int iv = nq, iz = nq + nv, il = size_, im = size_ + m;
   J.setZero(dae_size(), dae_size());
 
@@ -163,10 +190,11 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
       update_positions(model, scratch_data_, dae_q_plus_);
       if (m > 0) {
         constraint_jacobian(model, scratch_data_, scratch_data_.constraint_jacobian);
-        scratch_data_.constraint_jacobian -= data_.constraint_jacobian;
-        scratch_data_.constraint_jacobian /= h;  // dJ/d(tangent k)
-        dFv_dtangent.col(k).noalias() -= scratch_data_.constraint_jacobian.transpose() * lambda;
-        J.block(il, 0, m, nq).noalias() += (scratch_data_.constraint_jacobian * v_) * dae_N_plus_.row(k);
+        dae_jacobian_plus_ = scratch_data_.constraint_jacobian(dae_rows_, Eigen::all);
+        dae_jacobian_plus_ -= dae_jacobian_;
+        dae_jacobian_plus_ /= h;  // dJ/d(tangent k)
+        dFv_dtangent.col(k).noalias() -= dae_jacobian_plus_.transpose() * lambda;
+        J.block(il, 0, m, nq).noalias() += (dae_jacobian_plus_ * v_) * dae_N_plus_.row(k);
       }
       if (applied) {
         update_velocities(model, scratch_data_, dae_q_plus_, v_);
@@ -221,10 +249,10 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
   J.block(iv, 0, nv, nq).noalias() = dFv_dtangent * dae_N_plus_;
 
   if (m > 0) {
-    J.block(0, im, nq, m).noalias() = dae_N_ * data_.constraint_jacobian.transpose();
-    J.block(iv, il, nv, m) = -data_.constraint_jacobian.transpose();
-    J.block(il, iv, m, nv) = data_.constraint_jacobian;
-    J.block(im, 0, m, nq).noalias() = data_.constraint_jacobian * dae_N_plus_;
+    J.block(0, im, nq, m).noalias() = dae_N_ * dae_jacobian_.transpose();
+    J.block(iv, il, nv, m) = -dae_jacobian_.transpose();
+    J.block(il, iv, m, nv) = dae_jacobian_;
+    J.block(im, 0, m, nq).noalias() = dae_jacobian_ * dae_N_plus_;
   }
   return true;
 }

@@ -40,7 +40,7 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   void project(double t, VectorX& y) override;
 
   // --- DaeSystem (multibody_dae.cpp) ---
-  int dae_size() const override { return size_ + 2 * model_->num_constraint_rows; }
+  int dae_size() const override { return size_ + 2 * dae_rows(); }
   void differential_mask(VectorX& mask) const override;
   void dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) override;
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y.head(size_); }
@@ -79,6 +79,8 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   void configuration_maps();                 // dae_N_ and dae_N_plus_ at q_
   void generalized_applied_force(const Data& base, const AppliedForces& forces, VectorX& out);
   bool has_applied_state_dependence() const;
+  /// Constraint rows in the DAE: the independent ones at the initial state.
+  int dae_rows() const { return static_cast<int>(dae_rows_.size()); }
 
   std::shared_ptr<const Model> model_;
   SystemSettings settings_;
@@ -96,6 +98,9 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   VectorX dae_q_plus_, dae_vector_m_, dae_vdot_;
   AlignedVector<Force> dae_subtree_forces_;
   MatrixX dae_N_, dae_N_plus_, dae_tangent_;
+  std::vector<int> dae_rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
+  MatrixX dae_jacobian_, dae_jacobian_plus_;  // J of the kept rows; finite-difference column workspace
+  VectorX dae_constraint_;                    // Phi of the kept rows
 };
 
 }  // namespace heavesim
