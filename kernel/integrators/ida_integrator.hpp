@@ -40,7 +40,7 @@ class IdaIntegrator : public Integrator {
   sundials::Context context_;
   sundials::CallbackError callback_error_;
   void* ida_ = nullptr;
-  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr, id_nv_ = nullptr;
+  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr, id_nv_ = nullptr, atol_nv_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
   VectorX state_, work_y_, work_yp_, work_r_;

@@ -153,8 +153,10 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
   residual(t, y, yp, r);
   configuration_maps();
   const auto lambda = y.segment(il, m);
+  const auto mu = y.segment(im, m);
+  MatrixX dFq_dtangent = MatrixX::Zero(nq, nv);  // N d(J^T mu)/d(tangent)
 
-  // F_q = q' - N(q) w, w = v - J^T mu.
+  // F_q = q' - N(q) w, w = v - J^T mu (the q-dependence of J^T mu is added below).
   J.block(0, 0, nq, nq).diagonal().setConstant(cj);
   const double h_raw = 1e-7;
   dae_q_plus_ = q_;
@@ -194,6 +196,7 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
         dae_jacobian_plus_ -= dae_jacobian_;
         dae_jacobian_plus_ /= h;  // dJ/d(tangent k)
         dFv_dtangent.col(k).noalias() -= dae_jacobian_plus_.transpose() * lambda;
+        dFq_dtangent.col(k).noalias() = dae_N_ * (dae_jacobian_plus_.transpose() * mu);
         J.block(il, 0, m, nq).noalias() += (dae_jacobian_plus_ * v_) * dae_N_plus_.row(k);
       }
       if (applied) {
@@ -247,6 +250,7 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
     J.block(iz, iz, nz, nz).diagonal().setConstant(cj);
   }
   J.block(iv, 0, nv, nq).noalias() = dFv_dtangent * dae_N_plus_;
+  J.block(0, 0, nq, nq).noalias() += dFq_dtangent * dae_N_plus_;
 
   if (m > 0) {
     J.block(0, im, nq, m).noalias() = dae_N_ * dae_jacobian_.transpose();

@@ -15,6 +15,9 @@ const std::vector<ValidationCheck>& validation_checks() {
       {"K5", "free rigid body: momentum and energy conservation, symmetric-top closed form", check_k5_free_body},
       {"K6", "algorithm cross-checks: CRBA vs RNEA, ABA vs CRBA, reactions vs subtree Newton-Euler",
        check_k6_algorithm_cross_checks},
+      {"L1", "slider-crank of SUNDIALS' idaSlCrank_dns (loop joint, spring-damper, push) vs a minimal-coordinate "
+             "oracle and the example's printout",
+       check_l1_slider_crank},
   };
   return checks;
 }

@@ -42,5 +42,6 @@ std::vector<ValidationRow> check_k2_planar_chains();
 std::vector<ValidationRow> check_k3_pendulum_runs();
 std::vector<ValidationRow> check_k5_free_body();
 std::vector<ValidationRow> check_k6_algorithm_cross_checks();
+std::vector<ValidationRow> check_l1_slider_crank();
 
 }  // namespace heavesim::validation
