@@ -58,7 +58,7 @@ void ErkIntegrator::advance_to(double t_out) {
   const int flag = ERKStepEvolve(arkode_, t_out, y_nv_, &t_reached, ARK_NORMAL);
   if (flag < 0) {
     callback_error_.rethrow_if_set();
-    throw NumericalError(t_reached, std::string("ARKODE ERK failed (") + ERKStepGetReturnFlagName(flag) + ")",
+    throw NumericalError(t_reached, std::string("ARKODE ERK failed (") + sundials::take_flag_name(ERKStepGetReturnFlagName(flag)) + ")",
                          flag == ARK_TOO_MUCH_WORK
                              ? "too many steps: the problem may be stiff; use solver.integrator: ida"
                              : "step-size collapse; check force elements and tolerances");

@@ -142,7 +142,7 @@ void IdaIntegrator::advance_to(double t_out) {
     callback_error_.rethrow_if_set();
     double h = 0.0;
     IDAGetLastStep(ida_, &h);
-    std::string what = std::string("IDA failed (") + IDAGetReturnFlagName(flag) + ") after reaching t = " +
+    std::string what = std::string("IDA failed (") + sundials::take_flag_name(IDAGetReturnFlagName(flag)) + ") after reaching t = " +
                        std::to_string(t_reached) + " s with last step " + std::to_string(h) + " s";
     std::string suggestion;
     switch (flag) {

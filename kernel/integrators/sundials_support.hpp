@@ -3,7 +3,9 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
+#include <cstdlib>
 #include <exception>
+#include <string>
 
 #include "kernel/system/ode_system.hpp"
 
@@ -11,6 +13,13 @@ namespace heavesim::sundials {
 
 inline Eigen::Map<VectorX> map(N_Vector v) {
   return Eigen::Map<VectorX>(N_VGetArrayPointer(v), N_VGetLength(v));
+}
+
+/// The text of a SUNDIALS *GetReturnFlagName result, which the caller must free().
+inline std::string take_flag_name(char* name) {
+  std::string text = name ? name : "unknown flag";
+  std::free(name);
+  return text;
 }
 
 /// Owns a SUNContext for one integrator instance.
