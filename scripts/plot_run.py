@@ -35,6 +35,15 @@ def joints_in_model_order(f):
     return names or list(f["joints"])
 
 
+def save(fig, out, stem, kind):
+    """Writes out/<stem>_<kind>.png and returns its path."""
+    path = os.path.join(out, f"{stem}_{kind}.png")
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return path
+
+
 def plot_joints(f, time, stem, out):
     joints = [name for name in joints_in_model_order(f) if "q" in f["joints"][name]]
     if not joints:
@@ -54,11 +63,7 @@ def plot_joints(f, time, stem, out):
     for ax in (ax_q, ax_v):
         ax.grid(True, alpha=0.3)
         ax.legend(loc="upper right", fontsize=8)
-    path = os.path.join(out, f"{stem}_joints.png")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, out, stem, "joints")
 
 
 def plot_reactions(f, time, stem, out):
@@ -81,11 +86,7 @@ def plot_reactions(f, time, stem, out):
     axes[0, 1].set_title("reaction moment about the joint origin, world axes")
     for ax in axes[-1]:
         ax.set_xlabel("time [s]")
-    path = os.path.join(out, f"{stem}_reactions.png")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, out, stem, "reactions")
 
 
 def plot_energy(f, time, stem, out):
@@ -106,11 +107,7 @@ def plot_energy(f, time, stem, out):
     for ax in (ax_e, ax_d):
         ax.grid(True, alpha=0.3)
     ax_e.legend(loc="upper right", fontsize=8)
-    path = os.path.join(out, f"{stem}_energy.png")
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
-    return path
+    return save(fig, out, stem, "energy")
 
 
 def main():

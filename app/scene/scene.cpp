@@ -54,12 +54,9 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
     int worst = 0;
     data.constraint_residual.cwiseAbs().maxCoeff(&worst);
     const std::string row = describe_constraint_row(model, worst);
-    const std::string name = row.substr(row.find('\'') + 1, row.find('\'', row.find('\'') + 1) - row.find('\'') - 1);
-    SourceLocation location{definition.source_path, 0, 0};
-    std::string key_path = "constraints";
-    if (auto it = definition.constraint_field_locations.find(name); it != definition.constraint_field_locations.end())
-      location = it->second.at("name");
-    if (auto it = definition.constraint_paths.find(name); it != definition.constraint_paths.end()) key_path = it->second;
+    const std::string& name = constraint_of_row(model, worst)->name;  // every constraint comes from the case
+    const SourceLocation location = definition.constraint_field_locations.at(name).at("name");
+    const std::string& key_path = definition.constraint_paths.at(name);
     throw InputError(location, key_path,
                      fmt::format("an initial state where {} cannot close: |Phi| = {:.3g} after {} Newton iterations",
                                  row, result.position_residual, result.iterations),

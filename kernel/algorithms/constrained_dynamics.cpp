@@ -4,27 +4,21 @@
 
 namespace heavesim {
 
-const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& q, const VectorX& v,
-                                            const VectorX& tau, ExternalForces external_forces_world,
-                                            const ConstraintStabilization& stabilization) {
+const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
+                                            ExternalForces external_forces_world) {
   // Unconstrained accelerations; keeps M's Cholesky factor in data.
   data.kkt_free_qdd = composite_rigid_body_forward_dynamics(model, data, tau, external_forces_world);
   if (!model.has_constraints()) return data.qdd;
 
-  constraint_residual(model, data, q, data.constraint_residual);
   constraint_jacobian(model, data, data.constraint_jacobian);
   constraint_bias(model, data, data.constraint_bias);
 
-  // Y = M^-1 J^T, A = J Y, b = gamma_s - J qdd_free.
+  // Y = M^-1 J^T, A = J Y, b = gamma - J qdd_free.
   data.kkt_minv_jt = data.constraint_jacobian.transpose();
   data.mass_matrix_cholesky.solveInPlace(data.kkt_minv_jt);
   data.kkt_schur.noalias() = data.constraint_jacobian * data.kkt_minv_jt;
   data.kkt_rhs = data.constraint_bias;
   data.kkt_rhs.noalias() -= data.constraint_jacobian * data.kkt_free_qdd;
-  if (stabilization.alpha != 0.0 || stabilization.beta != 0.0) {
-    data.kkt_rhs.noalias() -= (2.0 * stabilization.alpha) * (data.constraint_jacobian * v);
-    data.kkt_rhs -= (stabilization.beta * stabilization.beta) * data.constraint_residual;
-  }
 
   data.kkt_decomposition.setThreshold(kkt_rank_threshold);
   data.kkt_decomposition.compute(data.kkt_schur);

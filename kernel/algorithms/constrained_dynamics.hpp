@@ -1,29 +1,24 @@
 #pragma once
 // Forward dynamics of a model with closed loops (index-1 form):
 //   [ M  -J^T ] [ qdd    ]   [ tau - C(q, v)             ]
-//   [ J   0   ] [ lambda ] = [ gamma - 2 alpha Phi' - beta^2 Phi ]
+//   [ J   0   ] [ lambda ] = [ gamma                    ]
 // solved through the Schur complement on M's Cholesky factor:
-//   (J M^-1 J^T) lambda = gamma_s - J M^-1 (tau - C),  qdd = M^-1 (tau - C + J^T lambda).
+//   (J M^-1 J^T) lambda = gamma - J M^-1 (tau - C),  qdd = M^-1 (tau - C + J^T lambda).
 // Redundant constraints make J M^-1 J^T singular: lambda is then the minimum-norm
 // solution (complete orthogonal decomposition), the motion stays unique, and the
 // reactions along the redundant directions are not unique (Wojtyra 2005).
+// Drift is not stabilized here: the explicit methods project after each step and IDA
+// integrates the GGL form, which holds Phi = 0 itself.
 #include "kernel/algorithms/forward_dynamics.hpp"
 
 namespace heavesim {
-
-/// Baumgarte stabilization rates [1/s] (0, 0 = none: drift is removed by projection or GGL).
-struct ConstraintStabilization {
-  double alpha = 0.0;
-  double beta = 0.0;
-};
 
 /// Relative threshold on J M^-1 J^T below which a direction counts as redundant.
 inline constexpr double kkt_rank_threshold = 1e-10;
 
 /// qdd (data.qdd) and lambda (data.constraint_multipliers) on the current stages;
-/// also leaves Phi, J and gamma in data. Without constraints this is CRBA forward dynamics.
-const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& q, const VectorX& v,
-                                            const VectorX& tau, ExternalForces external_forces_world = {},
-                                            const ConstraintStabilization& stabilization = {});
+/// also leaves J and gamma in data. Without constraints this is CRBA forward dynamics.
+const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
+                                            ExternalForces external_forces_world = {});
 
 }  // namespace heavesim

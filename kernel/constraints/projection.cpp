@@ -69,16 +69,20 @@ ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double re
   return result;
 }
 
+const Constraint* constraint_of_row(const Model& model, int row) {
+  for (const Constraint& constraint : model.constraints)
+    if (row >= constraint.first_row && row < constraint.first_row + static_cast<int>(constraint.rows.size()))
+      return &constraint;
+  return nullptr;
+}
+
 std::string describe_constraint_row(const Model& model, int row) {
-  for (const Constraint& constraint : model.constraints) {
-    const int local = row - constraint.first_row;
-    if (local < 0 || local >= static_cast<int>(constraint.rows.size())) continue;
-    const char* type = constraint.type == Constraint::Type::loop_joint ? "loop joint"
-                       : constraint.type == Constraint::Type::distance ? "distance constraint"
-                                                                       : "coupler";
-    return std::string(type) + " '" + constraint.name + "': " + constraint.rows[local].description;
-  }
-  return "row " + std::to_string(row);
+  const Constraint* constraint = constraint_of_row(model, row);
+  if (!constraint) return "row " + std::to_string(row);
+  const char* type = constraint->type == Constraint::Type::loop_joint ? "loop joint"
+                     : constraint->type == Constraint::Type::distance ? "distance constraint"
+                                                                      : "coupler";
+  return std::string(type) + " '" + constraint->name + "': " + constraint->rows[row - constraint->first_row].description;
 }
 
 }  // namespace heavesim

@@ -34,6 +34,9 @@ struct ConstraintRank {
 };
 ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double relative_threshold = 1e-10);
 
+/// The constraint that owns row r, or null.
+const Constraint* constraint_of_row(const Model& model, int row);
+
 /// "loop joint 'crown_b': rotation about x" for row r.
 std::string describe_constraint_row(const Model& model, int row);
 

@@ -5,7 +5,11 @@
 namespace heavesim {
 
 SpringDamper::State SpringDamper::state(const Data& data) const {
-  const Vector3 d = b_.position_world(data) - a_.position_world(data);
+  return state_at(a_.position_world(data), b_.position_world(data), data);
+}
+
+SpringDamper::State SpringDamper::state_at(const Vector3& pa, const Vector3& pb, const Data& data) const {
+  const Vector3 d = pb - pa;
   const double length = d.norm();
   const double rate = length > 0.0 ? d.dot(b_.velocity_world(data) - a_.velocity_world(data)) / length : 0.0;
   return {length, rate, parameters_.stiffness * (length - parameters_.rest_length) + parameters_.damping * rate};
@@ -14,7 +18,7 @@ SpringDamper::State SpringDamper::state(const Data& data) const {
 void SpringDamper::apply(double t, const Model&, const Data& data, Eigen::Ref<const VectorX>,
                          AppliedForces& forces) const {
   const Vector3 pa = a_.position_world(data), pb = b_.position_world(data);
-  const State s = state(data);
+  const State s = state_at(pa, pb, data);
   // Coincident ends have no line of action; a real strut cannot get there.
   if (!(s.length > 1e-12))
     throw NumericalError(t, "spring-damper '" + name_ + "': its end points coincide (no line of action)",

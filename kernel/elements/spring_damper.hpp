@@ -27,6 +27,9 @@ class SpringDamper : public ForceElement {
   State state(const Data& data) const;
 
  private:
+  /// The state for end points already placed (pa, pb in the world frame [m]).
+  State state_at(const Vector3& pa, const Vector3& pb, const Data& data) const;
+
   std::string name_;
   BodyPoint a_, b_;
   SpringDamperParameters parameters_;

@@ -89,10 +89,15 @@ Matrix3 canonical_axes(const Definition& joint, ModelError::ItemKind item) {
 
 void ModelBuilder::add_constraints(Model& model) const {
   std::map<std::string, int> names;
-  auto claim_name = [&](const std::string& name) {
+  // A new constraint of this type under a name no joint or constraint uses yet.
+  auto start = [&](const std::string& name, Constraint::Type type) {
     if (model.joint_index(name) > 0 || !names.emplace(name, 0).second)
       throw constraint_error(name, "name", "'" + name + "' a second time (joints and constraints share names)",
                              "a unique name");
+    Constraint constraint;
+    constraint.name = name;
+    constraint.type = type;
+    return constraint;
   };
   auto link_of = [&](const std::string& constraint, const std::string& field, const std::string& body) {
     const int link = model.link_index(body);
@@ -107,10 +112,7 @@ void ModelBuilder::add_constraints(Model& model) const {
   };
 
   for (const LoopJointDefinition& def : loop_joints_) {
-    claim_name(def.name);
-    Constraint constraint;
-    constraint.name = def.name;
-    constraint.type = Constraint::Type::loop_joint;
+    Constraint constraint = start(def.name, Constraint::Type::loop_joint);
     constraint.joint_kind = def.kind;
     constraint.link_a = link_of(def.name, "parent", def.parent);
     constraint.link_b = link_of(def.name, "child", def.child);
@@ -128,10 +130,7 @@ void ModelBuilder::add_constraints(Model& model) const {
     add(std::move(constraint));
   }
   for (const DistanceConstraintDefinition& def : distances_) {
-    claim_name(def.name);
-    Constraint constraint;
-    constraint.name = def.name;
-    constraint.type = Constraint::Type::distance;
+    Constraint constraint = start(def.name, Constraint::Type::distance);
     constraint.link_a = link_of(def.name, "body_a", def.body_a);
     constraint.link_b = link_of(def.name, "body_b", def.body_b);
     if (constraint.link_a == constraint.link_b)
@@ -146,10 +145,7 @@ void ModelBuilder::add_constraints(Model& model) const {
     add(std::move(constraint));
   }
   for (const CouplerDefinition& def : couplers_) {
-    claim_name(def.name);
-    Constraint constraint;
-    constraint.name = def.name;
-    constraint.type = Constraint::Type::coupler;
+    Constraint constraint = start(def.name, Constraint::Type::coupler);
     for (const auto& [field, joint_name, joint_index] :
          {std::tuple{"joint_a", def.joint_a, &constraint.joint_a},
           std::tuple{"joint_b", def.joint_b, &constraint.joint_b}}) {

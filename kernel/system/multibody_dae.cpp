@@ -161,11 +161,17 @@ bool MultibodySystem::jacobian(double t, const VectorX& y, const VectorX& yp, do
   const double h_raw = 1e-7;
   dae_q_plus_ = q_;
   dae_qdot_plus_.resize(nq);
-  for (int k = 0; k < nq; ++k) {  // d(N(q) w)/dq in raw coordinates (quaternion blocks only differ from 0)
-    dae_q_plus_[k] += h_raw;
-    configuration_derivative(model, dae_q_plus_, dae_w_, dae_qdot_plus_);
-    dae_q_plus_[k] = q_[k];
-    J.block(0, k, nq, 1) -= (dae_qdot_plus_ - dae_qdot_) / h_raw;
+  // d(N(q) w)/dq in raw coordinates: N is constant for plain coordinates, so only the
+  // quaternion-carrying joints (spherical, free) have columns here.
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    if (joint.nq == 0 || joint_has_scalar_coordinates(joint.type)) continue;
+    for (int k = joint.q_index; k < joint.q_index + joint.nq; ++k) {
+      dae_q_plus_[k] += h_raw;
+      configuration_derivative(model, dae_q_plus_, dae_w_, dae_qdot_plus_);
+      dae_q_plus_[k] = q_[k];
+      J.block(0, k, nq, 1) -= (dae_qdot_plus_ - dae_qdot_) / h_raw;
+    }
   }
   J.block(0, iv, nq, nv) = -dae_N_;
 

@@ -54,8 +54,7 @@ void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
   v_ = y.segment(model.nq, model.nv);
   compute_stages_and_forces(t, y);
   if (model.has_constraints()) {
-    constrained_forward_dynamics(model, data_, q_, v_, forces_.joint_force, forces_.external_force_world,
-                                 settings_.stabilization);
+    constrained_forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world);
     check_constraint_solution(t);
   } else {
     forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world, settings_.method);

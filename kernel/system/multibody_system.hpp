@@ -19,7 +19,6 @@ namespace heavesim {
 
 struct SystemSettings {
   ForwardDynamicsMethod method = ForwardDynamicsMethod::articulated_body;  // trees without loops
-  ConstraintStabilization stabilization;  // Baumgarte rates for the index-1 form [1/s]
   double projection_tolerance = 1e-10;    // max |Phi| after a projection [m or rad]
   int projection_iterations = 8;
   /// Largest |J qdd - gamma| relative to |gamma| + |J M^-1 (tau - C)| accepted from the
@@ -95,9 +94,9 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   VectorX q_, v_, tau_total_, kkt_mismatch_;
   // DAE workspaces (multibody_dae.cpp)
   VectorX dae_w_, dae_qdot_, dae_qdot_plus_, dae_applied_, dae_applied_plus_, dae_zdot_, dae_zdot_plus_;
-  VectorX dae_q_plus_, dae_vector_m_, dae_vdot_;
+  VectorX dae_q_plus_, dae_vdot_;
   AlignedVector<Force> dae_subtree_forces_;
-  MatrixX dae_N_, dae_N_plus_, dae_tangent_;
+  MatrixX dae_N_, dae_N_plus_;
   std::vector<int> dae_rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
   MatrixX dae_jacobian_, dae_jacobian_plus_;  // J of the kept rows; finite-difference column workspace
   VectorX dae_constraint_;                    // Phi of the kept rows
