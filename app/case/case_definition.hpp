@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/case/control_definition.hpp"
 #include "app/case/input_error.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/elements/spring_damper.hpp"
@@ -24,8 +25,8 @@ struct SolverSettings {
   double t_start = 0.0;  // s
   double t_end = 10.0;   // s
   ForwardDynamicsMethod dynamics = ForwardDynamicsMethod::articulated_body;
-  /// Largest |Phi| accepted at assembly and after each projection [m or rad].
-  double constraint_tolerance = 1e-10;
+  // integrator.constraint_tolerance: largest |Phi| accepted at assembly, after each
+  // projection and at the end of an HHT step [m or rad].
 };
 
 /// A force element declared in `forces:`.
@@ -46,6 +47,7 @@ struct OutputSettings {
   bool joints = true;      // /joints/<name>/q, qd, qdd
   bool reactions = true;   // /joints/<name>/reaction_force, reaction_moment (+ joint axes)
   bool energy = true;      // /signals/kinetic_energy, potential_energy, total_energy
+  bool forces = true;      // /forces/<element>/<channel>: force-element outputs (compensators)
 };
 
 struct CaseDefinition {
@@ -60,7 +62,9 @@ struct CaseDefinition {
   std::vector<LoopJointDefinition> loop_joints;
   std::vector<DistanceConstraintDefinition> distance_constraints;
   std::vector<CouplerDefinition> couplers;
+  std::vector<DriverDefinition> drivers;
   std::vector<ForceDefinition> forces;
+  std::vector<CompensatorDefinition> compensators;  // from forces: (control_reader.cpp)
   std::map<std::string, JointInitialState> initial_states;  // by joint name
   SolverSettings solver;
   OutputSettings output;

@@ -7,7 +7,9 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
+#include "app/case/control_reader.hpp"
 #include "app/case/node_reader.hpp"
+#include "app/case/time_function.hpp"
 #include "kernel/spatial/rotation.hpp"
 
 #include <filesystem>
@@ -342,12 +344,87 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
   }
 }
 
+/// drivers[i]: {name, joint, coordinate, position, velocity, acceleration}; expressions of t.
+void read_drivers(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names,
+                  const ExpressionContext& expressions) {
+  for (const NodeReader& item : section.items()) {
+    item.expect_map({"name", "joint", "coordinate", "position", "velocity", "acceleration", "description"});
+    DriverDefinition def;
+    def.name = read_unique_name(item, names);
+    def.joint = item["joint"].text();
+    def.coordinate = static_cast<int>(item.optional("coordinate") ? item["coordinate"].integer() : 0);
+    auto expression = [&](const std::string& key) -> std::optional<std::string> {
+      auto node = item.optional(key);
+      if (!node) return std::nullopt;
+      if (!node->node().is_scalar()) node->fail("an expression of t such as 8 + 3*sin(t)");
+      // Each expression alone, so that an error points at the right key.
+      try {
+        TimeFunction(def.name, node->node().scalar, std::nullopt, std::nullopt, expressions.parameters());
+      } catch (const std::invalid_argument& e) {
+        node->fail(node->node().describe() + " (" + e.what() + ")", "an expression of t such as 8 + 3*sin(t)");
+      }
+      return node->node().scalar;
+    };
+    item["position"];  // required: reports a missing key
+    const std::string position = *expression("position");
+    const std::optional<std::string> velocity = expression("velocity"), acceleration = expression("acceleration");
+    if (velocity.has_value() != acceleration.has_value())
+      item[velocity ? "velocity" : "acceleration"].fail(
+          "only one of velocity and acceleration", "both (the exact derivatives of position) or neither");
+    auto function = std::make_shared<const TimeFunction>(def.name, position, velocity, acceleration,
+                                                         expressions.parameters());
+    def.motion = [function](double t) { return (*function)(t); };
+    definition.constraint_paths[def.name] = item.path();
+    definition.constraint_field_locations[def.name] =
+        field_locations(item, {"name", "joint", "coordinate", "position", "velocity", "acceleration"});
+    definition.drivers.push_back(std::move(def));
+  }
+}
+
+/// Explicit driver derivatives must be the derivatives of the position: compared with
+/// central differences at 21 times over the run (a typo in `velocity` would otherwise
+/// fight the position constraint).
+void check_driver_derivatives(const CaseDefinition& definition, const ExpressionContext& expressions,
+                              const NodeReader& section) {
+  const std::vector<NodeReader> items = section.items();
+  for (std::size_t d = 0; d < definition.drivers.size(); ++d) {
+    const NodeReader& item = items[d];
+    if (!item.has("velocity")) continue;
+    const TimeFunction differenced(definition.drivers[d].name, item["position"].node().scalar, std::nullopt,
+                                   std::nullopt, expressions.parameters());
+    const double t0 = definition.solver.t_start, t1 = definition.solver.t_end;
+    double scale_v = 0.0, scale_a = 0.0, error_v = 0.0, error_a = 0.0, worst_v = t0, worst_a = t0;
+    for (int k = 0; k <= 20; ++k) {
+      const double t = t0 + (t1 - t0) * k / 20.0;
+      const DriverMotion given = definition.drivers[d].motion(t), reference = differenced(t);
+      scale_v = std::max(scale_v, std::abs(reference.velocity));
+      scale_a = std::max(scale_a, std::abs(reference.acceleration));
+      if (std::abs(given.velocity - reference.velocity) > error_v)
+        error_v = std::abs(given.velocity - reference.velocity), worst_v = t;
+      if (std::abs(given.acceleration - reference.acceleration) > error_a)
+        error_a = std::abs(given.acceleration - reference.acceleration), worst_a = t;
+    }
+    if (error_v > 1e-5 * (scale_v + 1e-9))
+      item["velocity"].fail(fmt::format("a velocity that differs from d(position)/dt by {:.3g} at t = {:g} s",
+                                        error_v, worst_v),
+                            "the exact time derivative of position");
+    if (error_a > 1e-4 * (scale_a + 1e-9))
+      item["acceleration"].fail(fmt::format("an acceleration that differs from d2(position)/dt2 by {:.3g} at t = {:g} s",
+                                            error_a, worst_a),
+                                "the exact second time derivative of position");
+  }
+}
+
 void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& item : section.items()) {
+    const std::string type =
+        item["type"].choice({"spring_damper", "point_force", "pneumatic_compensator", "active_compensator"});
+    if (is_compensator_type(type)) {
+      read_compensator(item, type, read_unique_name(item, names), definition);
+      continue;
+    }
     ForceDefinition def;
-    def.type = item["type"].choice({"spring_damper", "point_force"}) == "spring_damper"
-                   ? ForceDefinition::Type::spring_damper
-                   : ForceDefinition::Type::point_force;
+    def.type = type == "spring_damper" ? ForceDefinition::Type::spring_damper : ForceDefinition::Type::point_force;
     def.name = read_unique_name(item, names);
     if (def.type == ForceDefinition::Type::spring_damper) {
       item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "stiffness", "damping",
@@ -375,14 +452,15 @@ void read_forces(const NodeReader& section, CaseDefinition& definition, std::set
 
 void read_solver(const NodeReader& reader, CaseDefinition& definition) {
   reader.expect_map({"integrator", "t_start", "t_end", "step", "rtol", "atol", "max_step", "max_steps", "dynamics",
-                     "linear_solver", "constraint_tolerance"});
+                     "linear_solver", "constraint_tolerance", "hht_alpha"});
   SolverSettings& solver = definition.solver;
   if (auto integrator = reader.optional("integrator")) {
-    const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida"});
-    solver.integrator.method = method == "rk4"       ? IntegrationMethod::rk4
-                               : method == "dopri5"  ? IntegrationMethod::dopri5
-                               : method == "verner6" ? IntegrationMethod::verner6
+    const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida", "hht"});
+    solver.integrator.method = method == "rk4"         ? IntegrationMethod::rk4
+                               : method == "dopri5"    ? IntegrationMethod::dopri5
+                               : method == "verner6"   ? IntegrationMethod::verner6
                                : method == "fehlberg8" ? IntegrationMethod::fehlberg8
+                               : method == "hht"       ? IntegrationMethod::hht
                                                        : IntegrationMethod::ida;
   }
   solver.t_start = reader.number_or("t_start", 0.0);
@@ -394,8 +472,14 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
     solver.integrator.step = step->positive_number();
     if (solver.integrator.step > solver.t_end - solver.t_start)
       step->fail(fmt::format("a step of {:g} s longer than the run", solver.integrator.step), "step <= t_end - t_start");
-  } else if (solver.integrator.method == IntegrationMethod::rk4) {
-    reader["step"];  // required for the fixed-step method: raises the missing-key error
+  } else if (solver.integrator.method == IntegrationMethod::rk4 || solver.integrator.method == IntegrationMethod::hht) {
+    reader["step"];  // required for the fixed-step methods: raises the missing-key error
+  }
+  if (auto alpha = reader.optional("hht_alpha")) {
+    solver.integrator.hht_alpha = alpha->number();
+    if (solver.integrator.hht_alpha < -1.0 / 3.0 || solver.integrator.hht_alpha > 0.0)
+      alpha->fail(fmt::format("{:g}", solver.integrator.hht_alpha),
+                  "a value in [-1/3, 0] (0: no numerical damping; -1/3: the most)");
   }
   if (auto rtol = reader.optional("rtol")) {
     solver.integrator.relative_tolerance = rtol->positive_number();
@@ -412,8 +496,8 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
     solver.integrator.linear_solver =
         linear_solver->choice({"dense", "sparse"}) == "dense" ? LinearSolver::dense : LinearSolver::sparse;
   if (auto tolerance = reader.optional("constraint_tolerance")) {
-    solver.constraint_tolerance = tolerance->positive_number();
-    if (solver.constraint_tolerance < 1e-14)
+    solver.integrator.constraint_tolerance = tolerance->positive_number();
+    if (solver.integrator.constraint_tolerance < 1e-14)
       tolerance->fail("a tolerance below round-off of the constraint equations", "constraint_tolerance >= 1e-14");
   }
   if (auto dynamics = reader.optional("dynamics"))
@@ -435,9 +519,10 @@ void read_output(const std::optional<NodeReader>& reader, CaseDefinition& defini
                      "interval <= t_end - t_start");
   }
   if (auto channels = reader->optional("channels")) {
-    output.bodies = output.joints = output.reactions = output.energy = false;
+    output.bodies = output.joints = output.reactions = output.energy = output.forces = false;
     for (const NodeReader& channel : channels->items()) {
-      const std::string which = channel.choice({"bodies", "joints", "reactions", "energy"});
+      const std::string which = channel.choice({"bodies", "joints", "reactions", "energy", "forces"});
+      output.forces |= which == "forces";
       output.bodies |= which == "bodies";
       output.joints |= which == "joints";
       output.reactions |= which == "reactions";
@@ -473,7 +558,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   ExpressionContext expressions;
   const NodeReader root(tree, "", expressions);
   root.expect_map({"name", "description", "parameters", "environment", "bodies", "joints", "loop_joints",
-                   "constraints", "forces", "solver", "output"});
+                   "constraints", "drivers", "forces", "solver", "output"});
 
   definition.name = root.optional("name") ? root["name"].text() : std::filesystem::path(path).stem().string();
   if (auto description = root.optional("description")) definition.description = description->text();
@@ -487,8 +572,10 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_joints(root["joints"], definition, names);
   if (auto section = root.optional("loop_joints")) read_loop_joints(*section, definition, names);
   if (auto section = root.optional("constraints")) read_constraints(*section, definition, names);
+  if (auto section = root.optional("drivers")) read_drivers(*section, definition, names, expressions);
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   read_solver(root["solver"], definition);
+  if (auto section = root.optional("drivers")) check_driver_derivatives(definition, expressions, *section);
   read_output(root.optional("output"), definition);
   return definition;
 }

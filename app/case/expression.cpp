@@ -13,11 +13,13 @@ double degrees_to_radians(double degrees) { return degrees * std::numbers::pi / 
 double radians_to_degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 }  // namespace
 
-ExpressionContext::ExpressionContext() : parser_(std::make_unique<mu::Parser>()) {
-  parser_->DefineFun("deg", degrees_to_radians);
-  parser_->DefineFun("rad", radians_to_degrees);
-  parser_->DefineConst("pi", std::numbers::pi);
+void define_case_functions(mu::Parser& parser) {
+  parser.DefineFun("deg", degrees_to_radians);
+  parser.DefineFun("rad", radians_to_degrees);
+  parser.DefineConst("pi", std::numbers::pi);
 }
+
+ExpressionContext::ExpressionContext() : parser_(std::make_unique<mu::Parser>()) { define_case_functions(*parser_); }
 
 ExpressionContext::~ExpressionContext() = default;
 

@@ -11,6 +11,9 @@ class Parser;
 
 namespace heavesim {
 
+/// Adds what every case expression may use: deg(x), rad(x) and the constant pi.
+void define_case_functions(mu::Parser& parser);
+
 class ExpressionContext {
  public:
   ExpressionContext();
@@ -24,6 +27,9 @@ class ExpressionContext {
 
   /// Value of a number or expression; throws std::invalid_argument with muParser's reason.
   double evaluate(const std::string& text) const;
+
+  /// The named parameters defined so far.
+  const std::map<std::string, double>& parameters() const { return parameters_; }
 
  private:
   std::unique_ptr<mu::Parser> parser_;

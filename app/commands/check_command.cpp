@@ -34,6 +34,10 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
   if (springs) fmt::print("; {} joint spring-dampers", springs);
   if (limits) fmt::print("; {} joint limits", limits);
   fmt::print("; {} force elements\n", scene.system->force_elements().size());
+  for (const auto& element : scene.system->force_elements())
+    if (element->state_size() > 0 || !element->channels().empty())
+      fmt::print("  force element {}: {} internal states, {} output channels\n", element->name(), element->state_size(),
+                 element->channels().size());
 
   const SolverSettings& solver = definition.solver;
   const IntegratorSettings& integrator = solver.integrator;

@@ -136,6 +136,7 @@ int run_command(const RunOptions& options) {
                  recorder.channel_maximum("/signals/constraint_velocity_residual"));
     for (const auto& [joint, peak] : recorder.peak_reactions())
       fmt::print("  peak reaction force at joint '{}': {:.6g} N\n", joint, peak);
+    for (const std::string& line : recorder.compensators().headlines()) fmt::print("  {}\n", line);
   }
   return 0;
 }

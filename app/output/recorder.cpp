@@ -40,7 +40,7 @@ std::string speed_units(const JointType& type, const std::string& per) {
 }  // namespace
 
 Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
-    : scene_(scene), file_(file), csv_(csv) {
+    : scene_(scene), file_(file), csv_(csv), compensators_(*scene.system) {
   define_channels(definition);
   if (file_) {
     // HDF5 lists groups alphabetically; keep the model's (topological) order too.
@@ -144,6 +144,7 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   }
 
   define_constraint_channels(output);
+  if (output.forces) define_element_channels();
 
   if (output.energy) {
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
@@ -169,14 +170,15 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
   phi_.resize(model.num_constraint_rows);
   constraint_velocity_.resize(model.num_constraint_rows);
   // Drift is always recorded: it is how a user sees that a loop stayed closed.
-  add({"/signals/constraint_residual", 0, "m or rad", "max |Phi(q)| over all constraint rows", {},
-       [this, &system](double, double* out) {
-         constraint_residual(system.model(), system.data(), system.configuration(), phi_);
+  add({"/signals/constraint_residual", 0, "m or rad", "max |Phi(q, t)| over all constraint rows", {},
+       [this, &system](double t, double* out) {
+         constraint_residual(system.model(), system.data(), system.configuration(), t, phi_);
          out[0] = phi_.cwiseAbs().maxCoeff();
        }});
-  add({"/signals/constraint_velocity_residual", 0, "m/s or rad/s", "max |J v| over all constraint rows", {},
-       [this, &system](double, double* out) {
-         constraint_velocity_.noalias() = system.data().constraint_jacobian * system.velocity();
+  add({"/signals/constraint_velocity_residual", 0, "m/s or rad/s",
+       "max |J v + dPhi/dt| over all constraint rows", {}, [this, &system](double t, double* out) {
+         constraint_velocity_target(system.model(), t, constraint_velocity_);
+         constraint_velocity_.noalias() -= system.data().constraint_jacobian * system.velocity();
          out[0] = constraint_velocity_.cwiseAbs().maxCoeff();
        }});
   if (!output.reactions) return;
@@ -187,11 +189,12 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
     for (const ConstraintRow& row : constraint.rows) labels.push_back("." + row.description);
     add({base + "/multipliers", rows, "N, N m or N/m",
          "Lagrange multipliers lambda of the constraint rows (M qdd + C = tau + J^T lambda); "
-         "minimum-norm where rows are redundant",
+         "minimum-norm where rows are redundant; a driver's is the force (N) or torque (N m) it applies "
+         "along its coordinate",
          labels, [&system, &constraint, rows](double, double* out) {
            Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
          }});
-    if (constraint.type == Constraint::Type::coupler) continue;
+    if (constraint.type == Constraint::Type::coupler || constraint.type == Constraint::Type::driver) continue;
     // The wrench on side B (the loop joint's child side) about frame B's origin.
     auto wrench_at_b = [&system, &constraint]() {
       const Force f = constraint_wrench(system.model(), system.data(), constraint, system.data().constraint_multipliers);
@@ -207,8 +210,30 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
   }
 }
 
+void Recorder::define_element_channels() {
+  const MultibodySystem& system = *scene_.system;
+  element_values_.resize(system.force_elements().size());
+  for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    element_values_[e].resize(element.channels().size());
+    for (std::size_t c = 0; c < element.channels().size(); ++c) {
+      const ElementChannel& channel = element.channels()[c];
+      add({"/forces/" + element.name() + "/" + channel.name, 0, channel.units, channel.description, {},
+           [this, e, c](double, double* out) { out[0] = element_values_[e][c]; }});
+    }
+  }
+}
+
 void Recorder::record(double t, const VectorX& y) {
-  scene_.system->evaluate(t, y, needs_reactions_);
+  MultibodySystem& system = *scene_.system;
+  system.evaluate(t, y, needs_reactions_);
+  for (std::size_t e = 0; e < element_values_.size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    if (element_values_[e].empty()) continue;
+    element.outputs(t, system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()),
+                    element_values_[e]);
+  }
+  compensators_.observe(t, y);
   csv_row_.clear();
   for (Channel& channel : channels_) {
     row_.resize(std::max(channel.columns, 1));
@@ -219,7 +244,6 @@ void Recorder::record(double t, const VectorX& y) {
   }
   if (csv_) csv_->write_row(csv_row_);
 
-  const MultibodySystem& system = *scene_.system;
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k)
     peak_reactions_[k].second =
         std::max(peak_reactions_[k].second, joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm());
@@ -249,6 +273,7 @@ void Recorder::finish() {
   }
   file_->set_attribute("/summary", "samples", samples_);
   file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
+  compensators_.write(*file_);
   for (const auto& [joint, peak] : peak_reactions_)
     file_->set_attribute("/summary", "peak_reaction_force_" + joint, peak);
   file_->flush();

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/case/case_definition.hpp"
+#include "app/output/compensator_summary.hpp"
 #include "app/output/csv_writer.hpp"
 #include "app/output/result_file.hpp"
 #include "app/output/running_statistics.hpp"
@@ -31,6 +32,7 @@ class Recorder {
   double relative_energy_drift() const { return energy_drift_; }
   /// Largest reaction-force magnitude [N] per joint, in model joint order.
   const std::vector<std::pair<std::string, double>>& peak_reactions() const { return peak_reactions_; }
+  const CompensatorSummary& compensators() const { return compensators_; }
 
  private:
   struct Channel {
@@ -47,6 +49,8 @@ class Recorder {
   void define_channels(const CaseDefinition& definition);
   /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
   void define_constraint_channels(const OutputSettings& output);
+  /// /forces/<element>/<channel> for every force element that has output channels.
+  void define_element_channels();
 
   Scene& scene_;
   ResultFile* file_;
@@ -59,6 +63,8 @@ class Recorder {
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
   std::vector<std::pair<std::string, double>> peak_reactions_;
   std::vector<int> reaction_joints_;
+  std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample
+  CompensatorSummary compensators_;
 };
 
 }  // namespace heavesim

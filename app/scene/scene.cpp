@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "app/scene/control_scene.hpp"
+
 #include "kernel/elements/point_force.hpp"
 #include "kernel/elements/spring_damper.hpp"
 
@@ -47,7 +49,7 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
   Assembly assembly;
   const VectorX q_user = q, v_user = v;
   const ProjectionResult result =
-      project_to_constraints(model, data, q, v, definition.solver.constraint_tolerance, 50);
+      project_to_constraints(model, data, definition.solver.t_start, q, v, definition.solver.integrator.constraint_tolerance, 50);
   assembly.newton_iterations = result.iterations;
   assembly.position_residual = result.position_residual;
   if (!result.converged) {
@@ -62,7 +64,7 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
                                  row, result.position_residual, result.iterations),
                      fmt::format("initial joint coordinates near a configuration that satisfies every loop "
                                  "(|Phi| <= solver.constraint_tolerance = {:g})",
-                                 definition.solver.constraint_tolerance));
+                                 definition.solver.integrator.constraint_tolerance));
   }
   assembly.largest_position_change = (q - q_user).cwiseAbs().maxCoeff();
   assembly.largest_speed_change = model.nv > 0 ? (v - v_user).cwiseAbs().maxCoeff() : 0.0;
@@ -81,6 +83,7 @@ Scene build_scene(const CaseDefinition& definition) {
   for (const DistanceConstraintDefinition& constraint : definition.distance_constraints)
     builder.add_distance_constraint(constraint);
   for (const CouplerDefinition& coupler : definition.couplers) builder.add_coupler(coupler);
+  for (const DriverDefinition& driver : definition.drivers) builder.add_driver(driver);
 
   Scene scene;
   try {
@@ -91,7 +94,7 @@ Scene build_scene(const CaseDefinition& definition) {
   const Model& model = *scene.model;
   SystemSettings settings;
   settings.method = definition.solver.dynamics;
-  settings.projection_tolerance = definition.solver.constraint_tolerance;
+  settings.projection_tolerance = definition.solver.integrator.constraint_tolerance;
   scene.system = std::make_unique<MultibodySystem>(scene.model, settings);
   add_force_elements(definition, model, *scene.system);
 
@@ -104,7 +107,17 @@ Scene build_scene(const CaseDefinition& definition) {
     q0.segment(joint.q_index, joint.nq) = it->second.q;
     v0.segment(joint.v_index, joint.nv) = it->second.v;
   }
+  // Driven coordinates start on their prescribed motion, so that assembly does not
+  // move the other coordinates to meet them.
+  for (const Constraint& constraint : model.constraints) {
+    if (constraint.type != Constraint::Type::driver) continue;
+    const Joint& joint = model.joints[constraint.joint_a];
+    const DriverMotion start = constraint.motion(definition.solver.t_start);
+    q0[joint.q_index + constraint.coordinate] = start.position;
+    v0[joint.v_index + constraint.coordinate] = start.velocity;
+  }
   if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
+  add_compensators(definition, model, *scene.system, definition.solver.t_start, q0);
   scene.initial_state = scene.system->initial_state(q0, v0);
   return scene;
 }

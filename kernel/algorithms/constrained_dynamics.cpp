@@ -4,14 +4,14 @@
 
 namespace heavesim {
 
-const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
+const VectorX& constrained_forward_dynamics(const Model& model, Data& data, double t, const VectorX& tau,
                                             ExternalForces external_forces_world) {
   // Unconstrained accelerations; keeps M's Cholesky factor in data.
   data.kkt_free_qdd = composite_rigid_body_forward_dynamics(model, data, tau, external_forces_world);
   if (!model.has_constraints()) return data.qdd;
 
   constraint_jacobian(model, data, data.constraint_jacobian);
-  constraint_bias(model, data, data.constraint_bias);
+  constraint_bias(model, data, t, data.constraint_bias);
 
   // Y = M^-1 J^T, A = J Y, b = gamma - J qdd_free.
   data.kkt_minv_jt = data.constraint_jacobian.transpose();
@@ -20,10 +20,8 @@ const VectorX& constrained_forward_dynamics(const Model& model, Data& data, cons
   data.kkt_rhs = data.constraint_bias;
   data.kkt_rhs.noalias() -= data.constraint_jacobian * data.kkt_free_qdd;
 
-  data.kkt_decomposition.setThreshold(kkt_rank_threshold);
-  data.kkt_decomposition.compute(data.kkt_schur);
-  data.kkt_rank = static_cast<int>(data.kkt_decomposition.rank());
-  data.constraint_multipliers = data.kkt_decomposition.solve(data.kkt_rhs);
+  data.kkt_solver.compute(data.kkt_schur, kkt_regularization);
+  data.kkt_solver.solve(data.kkt_rhs, data.constraint_multipliers);
   data.qdd = data.kkt_free_qdd;
   data.qdd.noalias() += data.kkt_minv_jt * data.constraint_multipliers;
   return data.qdd;

@@ -5,7 +5,7 @@
 // solved through the Schur complement on M's Cholesky factor:
 //   (J M^-1 J^T) lambda = gamma - J M^-1 (tau - C),  qdd = M^-1 (tau - C + J^T lambda).
 // Redundant constraints make J M^-1 J^T singular: lambda is then the minimum-norm
-// solution (complete orthogonal decomposition), the motion stays unique, and the
+// solution (regularized Cholesky, regularized_symmetric_solver.hpp), the motion stays unique, and the
 // reactions along the redundant directions are not unique (Wojtyra 2005).
 // Drift is not stabilized here: the explicit methods project after each step and IDA
 // integrates the GGL form, which holds Phi = 0 itself.
@@ -13,12 +13,14 @@
 
 namespace heavesim {
 
-/// Relative threshold on J M^-1 J^T below which a direction counts as redundant.
-inline constexpr double kkt_rank_threshold = 1e-10;
+/// Regularization of J M^-1 J^T relative to its largest diagonal entry: the
+/// multipliers are minimum-norm to ~1e-12 relative where rows are redundant.
+inline constexpr double kkt_regularization = 1e-12;
 
-/// qdd (data.qdd) and lambda (data.constraint_multipliers) on the current stages;
-/// also leaves J and gamma in data. Without constraints this is CRBA forward dynamics.
-const VectorX& constrained_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
+/// qdd (data.qdd) and lambda (data.constraint_multipliers) on the current stages at
+/// time t [s] (drivers); also leaves J and gamma in data. Without constraints this is
+/// CRBA forward dynamics.
+const VectorX& constrained_forward_dynamics(const Model& model, Data& data, double t, const VectorX& tau,
                                             ExternalForces external_forces_world = {});
 
 }  // namespace heavesim

@@ -8,10 +8,12 @@
 //   perpendicular  a_A . b_B = 0                keeps an axis of A perpendicular to one of B
 //   distance       (|p_B - p_A|^2 - L^2) / 2 = 0
 //   coupler        q_a - ratio q_b - offset = 0 (coordinates of two 1-DoF joints)
+//   driver         q_a,k - f(t) = 0            (prescribed motion of one joint coordinate)
 //
 // For every spatial row d(phi)/dt = G_B . (v_B - v_A) exactly, with G_B a world spatial
 // force direction on B (and -G_B on A): this gives J, -dJ/dt v and the constraint's
 // reaction wrench without finite differences (constraint_equations.hpp).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,7 +22,7 @@
 
 namespace heavesim {
 
-enum class ConstraintRowKind { along, perpendicular, distance, coupler };
+enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver };
 
 struct ConstraintRow {
   ConstraintRowKind kind = ConstraintRowKind::along;
@@ -29,8 +31,17 @@ struct ConstraintRow {
   std::string description;  // e.g. "translation along x"
 };
 
+/// A prescribed motion f(t) and its first two time derivatives, in the joint
+/// coordinate's units (m, m/s, m/s^2 or rad, rad/s, rad/s^2).
+struct DriverMotion {
+  double position = 0.0;
+  double velocity = 0.0;
+  double acceleration = 0.0;
+};
+using DriverFunction = std::function<DriverMotion(double t)>;
+
 struct Constraint {
-  enum class Type { loop_joint, distance, coupler };
+  enum class Type { loop_joint, distance, coupler, driver };
   std::string name;
   Type type = Type::loop_joint;
   JointKind joint_kind = JointKind::fixed;  // loop joints: the joint they stand for
@@ -40,6 +51,8 @@ struct Constraint {
   double distance = 0.0;                    // m, distance constraints
   int joint_a = 0, joint_b = 0;             // coupler: the two 1-DoF joints (model joint indices)
   double ratio = 1.0, offset = 0.0;         // coupler: q_a = ratio q_b + offset
+  int coordinate = 0;                       // driver: which coordinate of joint_a it prescribes
+  DriverFunction motion;                    // driver: q_a,coordinate = motion(t).position
   int first_row = 0;
   std::vector<ConstraintRow> rows;
 };

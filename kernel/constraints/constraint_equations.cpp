@@ -39,6 +39,7 @@ Force row_direction(const ConstraintRow& row, const FrameState& f) {
       return Force(f.p_b.cross(r), r);
     }
     case ConstraintRowKind::coupler:
+    case ConstraintRowKind::driver:
       break;
   }
   return Force::Zero();
@@ -61,6 +62,7 @@ Force row_direction_rate(const ConstraintRow& row, const FrameState& f) {
       return Force(f.pdot_b.cross(r) + f.p_b.cross(r_dot), r_dot);
     }
     case ConstraintRowKind::coupler:
+    case ConstraintRowKind::driver:
       break;
   }
   return Force::Zero();
@@ -83,8 +85,14 @@ Transform constraint_frame_b(const Data& data, const Constraint& constraint) {
   return data.X_world_link[constraint.link_b] * constraint.X_linkB_frame;
 }
 
-void constraint_residual(const Model& model, const Data& data, const VectorX& q, Eigen::Ref<VectorX> residual) {
+void constraint_residual(const Model& model, const Data& data, const VectorX& q, double t,
+                         Eigen::Ref<VectorX> residual) {
   for (const Constraint& constraint : model.constraints) {
+    if (constraint.type == Constraint::Type::driver) {
+      residual[constraint.first_row] =
+          q[model.joints[constraint.joint_a].q_index + constraint.coordinate] - constraint.motion(t).position;
+      continue;
+    }
     if (constraint.type == Constraint::Type::coupler) {
       residual[constraint.first_row] = q[model.joints[constraint.joint_a].q_index] -
                                        constraint.ratio * q[model.joints[constraint.joint_b].q_index] -
@@ -104,7 +112,8 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
         case ConstraintRowKind::distance:
           value = 0.5 * (r.squaredNorm() - constraint.distance * constraint.distance);
           break;
-        case ConstraintRowKind::coupler: break;
+        case ConstraintRowKind::coupler:
+        case ConstraintRowKind::driver: break;
       }
     }
   }
@@ -113,6 +122,10 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
 void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<MatrixX> jacobian) {
   jacobian.setZero();
   for (const Constraint& constraint : model.constraints) {
+    if (constraint.type == Constraint::Type::driver) {
+      jacobian(constraint.first_row, model.joints[constraint.joint_a].v_index + constraint.coordinate) = 1.0;
+      continue;
+    }
     if (constraint.type == Constraint::Type::coupler) {
       jacobian(constraint.first_row, model.joints[constraint.joint_a].v_index) = 1.0;
       jacobian(constraint.first_row, model.joints[constraint.joint_b].v_index) = -constraint.ratio;
@@ -134,8 +147,18 @@ void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<Matrix
   }
 }
 
-void constraint_bias(const Model& model, const Data& data, Eigen::Ref<VectorX> bias) {
+void constraint_velocity_target(const Model& model, double t, Eigen::Ref<VectorX> target) {
+  target.setZero();
+  for (const Constraint& constraint : model.constraints)
+    if (constraint.type == Constraint::Type::driver) target[constraint.first_row] = constraint.motion(t).velocity;
+}
+
+void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> bias) {
   for (const Constraint& constraint : model.constraints) {
+    if (constraint.type == Constraint::Type::driver) {
+      bias[constraint.first_row] = constraint.motion(t).acceleration;
+      continue;
+    }
     if (constraint.type == Constraint::Type::coupler) {
       bias[constraint.first_row] = 0.0;
       continue;
@@ -155,7 +178,7 @@ void constraint_bias(const Model& model, const Data& data, Eigen::Ref<VectorX> b
 }
 
 Force constraint_wrench(const Model&, const Data& data, const Constraint& constraint, const VectorX& lambda) {
-  if (constraint.type == Constraint::Type::coupler) return Force::Zero();
+  if (constraint.type == Constraint::Type::coupler || constraint.type == Constraint::Type::driver) return Force::Zero();
   const FrameState frames = frame_state(data, constraint);
   Force wrench = Force::Zero();
   for (std::size_t k = 0; k < constraint.rows.size(); ++k)
@@ -166,6 +189,10 @@ Force constraint_wrench(const Model&, const Data& data, const Constraint& constr
 void add_constraint_loads(const Model& model, const Data& data, const VectorX& lambda,
                           AlignedVector<Force>& external_forces_world, VectorX& tau) {
   for (const Constraint& constraint : model.constraints) {
+    if (constraint.type == Constraint::Type::driver) {
+      tau[model.joints[constraint.joint_a].v_index + constraint.coordinate] += lambda[constraint.first_row];
+      continue;
+    }
     if (constraint.type == Constraint::Type::coupler) {
       const double force = lambda[constraint.first_row];
       tau[model.joints[constraint.joint_a].v_index] += force;

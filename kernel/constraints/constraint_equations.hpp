@@ -1,28 +1,34 @@
 #pragma once
-// The constraint equations Phi(q) = 0 of a model, their Jacobian J = dPhi/dq (in
-// velocity coordinates, m x nv), the acceleration bias gamma = -dJ/dt v, and the
-// forces they exert. Sign convention for multipliers lambda:
+// The constraint equations Phi(q, t) = 0 of a model, their Jacobian J = dPhi/dq (in
+// velocity coordinates, m x nv), the velocity target nu = -dPhi/dt (J v = nu), the
+// acceleration bias gamma = -dJ/dt v - d2Phi/dt2 (J qdd = gamma), and the forces they
+// exert. Only drivers depend on t explicitly. Sign convention for multipliers lambda:
 //   M qdd + C(q, v) = tau + J^T lambda,    J qdd = gamma.
 #include "kernel/model/data.hpp"
 
 namespace heavesim {
 
-/// Phi (m); requires the position stage. Coupler rows read q.
-void constraint_residual(const Model& model, const Data& data, const VectorX& q, Eigen::Ref<VectorX> residual);
+/// Phi(q, t) (m); requires the position stage. Coupler and driver rows read q.
+void constraint_residual(const Model& model, const Data& data, const VectorX& q, double t,
+                         Eigen::Ref<VectorX> residual);
 
 /// J (m x nv); requires the position stage.
 void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<MatrixX> jacobian);
 
-/// gamma = -dJ/dt v (m), the part of Phi'' that does not depend on qdd; requires the
-/// velocity stage.
-void constraint_bias(const Model& model, const Data& data, Eigen::Ref<VectorX> bias);
+/// nu = -dPhi/dt (m): J v = nu on the constraint manifold; zero but for drivers.
+void constraint_velocity_target(const Model& model, double t, Eigen::Ref<VectorX> target);
+
+/// gamma (m): J qdd = gamma, i.e. minus the part of d2Phi/dt2 that does not depend on
+/// qdd; requires the velocity stage.
+void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> bias);
 
 /// The wrench (world, about the origin) that constraint c exerts on its link_b for
-/// the multipliers lambda (all rows); link_a receives the opposite wrench. Zero for couplers.
+/// the multipliers lambda (all rows); link_a receives the opposite wrench. Zero for couplers
+/// and drivers (they act on joint coordinates).
 Force constraint_wrench(const Model& model, const Data& data, const Constraint& constraint, const VectorX& lambda);
 
-/// Adds J^T lambda as loads: constraint wrenches on the links (f_ext) and coupler
-/// forces on the joint coordinates (tau).
+/// Adds J^T lambda as loads: constraint wrenches on the links (f_ext) and coupler and
+/// driver forces on the joint coordinates (tau).
 void add_constraint_loads(const Model& model, const Data& data, const VectorX& lambda,
                           AlignedVector<Force>& external_forces_world, VectorX& tau);
 

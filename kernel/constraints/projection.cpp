@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 
 #include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
 #include "kernel/constraints/constraint_equations.hpp"
@@ -15,16 +16,15 @@ void minimum_energy_correction(Data& data, const VectorX& r) {
   data.kkt_minv_jt = data.constraint_jacobian.transpose();
   data.mass_matrix_cholesky.solveInPlace(data.kkt_minv_jt);
   data.kkt_schur.noalias() = data.constraint_jacobian * data.kkt_minv_jt;
-  data.kkt_decomposition.setThreshold(1e-10);
-  data.kkt_decomposition.compute(data.kkt_schur);
-  data.kkt_rhs = data.kkt_decomposition.solve(r);
+  data.kkt_solver.compute(data.kkt_schur, kkt_regularization);
+  data.kkt_solver.solve(r, data.kkt_rhs);
   data.projection_step.noalias() = -data.kkt_minv_jt * data.kkt_rhs;
 }
 
 }  // namespace
 
-ProjectionResult project_to_constraints(const Model& model, Data& data, VectorX& q, VectorX& v, double tolerance,
-                                        int max_iterations) {
+ProjectionResult project_to_constraints(const Model& model, Data& data, double t, VectorX& q, VectorX& v,
+                                        double tolerance, int max_iterations) {
   ProjectionResult result;
   if (!model.has_constraints()) {
     result.converged = true;
@@ -32,7 +32,7 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, VectorX&
   }
   for (;;) {
     update_positions(model, data, q);
-    constraint_residual(model, data, q, data.constraint_residual);
+    constraint_residual(model, data, q, t, data.constraint_residual);
     result.position_residual = data.constraint_residual.cwiseAbs().maxCoeff();
     if (result.position_residual <= tolerance || result.iterations >= max_iterations) break;
     constraint_jacobian(model, data, data.constraint_jacobian);
@@ -44,13 +44,16 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, VectorX&
   }
   result.converged = result.position_residual <= tolerance;
 
-  // Velocities: v -= M^-1 J^T (J M^-1 J^T)^+ J v at the projected configuration.
+  // Velocities: v -= M^-1 J^T (J M^-1 J^T)^+ (J v - nu) at the projected configuration.
   constraint_jacobian(model, data, data.constraint_jacobian);
+  constraint_velocity_target(model, t, data.constraint_velocity_target);
   data.mass_matrix_cholesky.compute(mass_matrix(model, data));
-  data.constraint_bias.noalias() = data.constraint_jacobian * v;  // workspace: J v
+  data.constraint_bias.noalias() = data.constraint_jacobian * v;  // workspace: J v - nu
+  data.constraint_bias -= data.constraint_velocity_target;
   minimum_energy_correction(data, data.constraint_bias);
   v += data.projection_step;
   data.constraint_bias.noalias() = data.constraint_jacobian * v;
+  data.constraint_bias -= data.constraint_velocity_target;
   result.velocity_residual = data.constraint_bias.cwiseAbs().maxCoeff();
   return result;
 }
@@ -81,7 +84,8 @@ std::string describe_constraint_row(const Model& model, int row) {
   if (!constraint) return "row " + std::to_string(row);
   const char* type = constraint->type == Constraint::Type::loop_joint ? "loop joint"
                      : constraint->type == Constraint::Type::distance ? "distance constraint"
-                                                                      : "coupler";
+                     : constraint->type == Constraint::Type::coupler  ? "coupler"
+                                                                      : "driver";
   return std::string(type) + " '" + constraint->name + "': " + constraint->rows[row - constraint->first_row].description;
 }
 

@@ -17,13 +17,13 @@ struct ProjectionResult {
   bool converged = false;
   int iterations = 0;
   double position_residual = 0.0;  // max |Phi| after the last iteration
-  double velocity_residual = 0.0;  // max |J v| after velocity projection
+  double velocity_residual = 0.0;  // max |J v - nu| after velocity projection
 };
 
-/// Newton iterations on Phi(q) = 0 until max |Phi| <= tolerance, then v onto J v = 0.
-/// Leaves the position stage (and J) at the projected q. Allocation-free.
-ProjectionResult project_to_constraints(const Model& model, Data& data, VectorX& q, VectorX& v, double tolerance,
-                                        int max_iterations);
+/// Newton iterations on Phi(q, t) = 0 until max |Phi| <= tolerance, then v onto
+/// J v = nu(t). Leaves the position stage (and J) at the projected q. Allocation-free.
+ProjectionResult project_to_constraints(const Model& model, Data& data, double t, VectorX& q, VectorX& v,
+                                        double tolerance, int max_iterations);
 
 /// Rank of the constraint Jacobian and the rows that depend on others, found by a
 /// rank-revealing (column-pivoted) QR of J^T at the current position stage.

@@ -1,6 +1,7 @@
 #include "kernel/integrators/integrator.hpp"
 
 #include "kernel/integrators/erk_integrator.hpp"
+#include "kernel/integrators/hht_integrator.hpp"
 #include "kernel/integrators/ida_integrator.hpp"
 #include "kernel/integrators/rk4_integrator.hpp"
 
@@ -18,6 +19,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings) 
       return std::make_unique<ErkIntegrator>(settings, ARKODE_FEHLBERG_13_7_8);
     case IntegrationMethod::ida:
       return std::make_unique<IdaIntegrator>(settings);
+    case IntegrationMethod::hht:
+      return std::make_unique<HhtIntegrator>(settings);
   }
   return nullptr;
 }
@@ -29,6 +32,7 @@ std::string integration_method_name(IntegrationMethod method) {
     case IntegrationMethod::verner6: return "verner6";
     case IntegrationMethod::fehlberg8: return "fehlberg8";
     case IntegrationMethod::ida: return "ida";
+    case IntegrationMethod::hht: return "hht";
   }
   return "?";
 }

@@ -13,7 +13,8 @@ enum class IntegrationMethod {
   dopri5,     // ARKODE ERK Dormand-Prince 5(4), adaptive, projection after every step
   verner6,    // ARKODE ERK Verner 6(5), adaptive (tight-tolerance references)
   fehlberg8,  // ARKODE ERK Fehlberg 8(7), adaptive (very tight tolerances)
-  ida         // SUNDIALS IDA, variable-order BDF (stiff problems), dense direct solver
+  ida,        // SUNDIALS IDA, variable-order BDF (stiff problems), dense direct solver
+  hht         // Hilber-Hughes-Taylor, index-3 augmented Lagrangian with projections, fixed step
 };
 
 /// Linear solver for IDA's Newton iterations.
@@ -30,6 +31,8 @@ struct IntegratorSettings {
   double max_step = 0.0;          // s, 0 = unlimited (adaptive methods)
   long max_steps_per_output = 100000;
   LinearSolver linear_solver = LinearSolver::dense;  // ida
+  double hht_alpha = 0.0;         // hht: numerical damping, in [-1/3, 0] (0: trapezoidal rule)
+  double constraint_tolerance = 1e-10;  // hht: largest |Phi| accepted at the end of a step [m or rad]
 };
 
 struct IntegratorStatistics {

@@ -3,8 +3,10 @@
 namespace heavesim {
 
 Data::Data(const Model& model)
-    : mass_matrix_cholesky(model.nv),
-      kkt_decomposition(model.num_constraint_rows, model.num_constraint_rows) {
+    : kkt_solver(model.num_constraint_rows) {
+  // Factor the identity: sizes the storage and defines the factorization status, which
+  // Eigen's LLT(size) constructor leaves unset (UBSan flags a copy of such a Data).
+  mass_matrix_cholesky.compute(MatrixX::Identity(model.nv, model.nv));
   const int n = model.num_links();
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
@@ -22,6 +24,7 @@ Data::Data(const Model& model)
   mass_matrix = MatrixX::Zero(model.nv, model.nv);
   const int m = model.num_constraint_rows;
   constraint_residual = VectorX::Zero(m);
+  constraint_velocity_target = VectorX::Zero(m);
   constraint_jacobian = MatrixX::Zero(m, model.nv);
   constraint_bias = VectorX::Zero(m);
   constraint_multipliers = VectorX::Zero(m);

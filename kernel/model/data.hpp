@@ -6,8 +6,8 @@
 // ("absolute" spatial vectors, Featherstone 2008 sec. 2.8 / Pinocchio's WORLD
 // convention): composite and articulated inertias then add without transforms.
 #include <Eigen/Cholesky>
-#include <Eigen/QR>
 
+#include "kernel/algorithms/regularized_symmetric_solver.hpp"
 #include "kernel/model/model.hpp"
 
 namespace heavesim {
@@ -43,6 +43,7 @@ struct Data {
 
   // --- constraints (closed loops); sized m = model.num_constraint_rows ---
   VectorX constraint_residual;      // Phi (m)
+  VectorX constraint_velocity_target;  // nu = -dPhi/dt (m): J v = nu; nonzero only for drivers
   MatrixX constraint_jacobian;      // J (m x nv)
   VectorX constraint_bias;          // gamma = -dJ/dt v (m)
   VectorX constraint_multipliers;   // lambda (m): M qdd + C = tau + J^T lambda
@@ -50,8 +51,7 @@ struct Data {
   MatrixX kkt_schur;                // J M^-1 J^T (m x m)
   VectorX kkt_rhs;                  // m
   VectorX kkt_free_qdd;             // nv: qdd without constraint forces
-  Eigen::CompleteOrthogonalDecomposition<MatrixX> kkt_decomposition;
-  int kkt_rank = 0;                 // rank of J M^-1 J^T at the last solve
+  RegularizedSymmetricSolver kkt_solver;  // (J M^-1 J^T + epsilon I)^-1
   VectorX projection_step;          // nv: Newton correction in velocity coordinates
   VectorX projection_configuration; // nq
 

@@ -167,6 +167,30 @@ void ModelBuilder::add_constraints(Model& model) const {
     constraint.rows = {{ConstraintRowKind::coupler, 0, 0, "coupled coordinates"}};
     add(std::move(constraint));
   }
+  for (const DriverDefinition& def : drivers_) {
+    Constraint constraint = start(def.name, Constraint::Type::driver);
+    const int index = model.joint_index(def.joint);
+    if (index < 0)
+      throw constraint_error(def.name, "joint", "'" + def.joint + "', which is not a joint", "the name of a joint");
+    const Joint& joint = model.joints[index];
+    if (joint.nv == 0 || !joint_has_scalar_coordinates(joint.type))
+      throw constraint_error(def.name, "joint", "a " + joint_type_name(joint.type) + " joint",
+                             "a revolute, prismatic, cylindrical or universal joint");
+    if (def.coordinate < 0 || def.coordinate >= joint.nv)
+      throw constraint_error(def.name, "coordinate", std::to_string(def.coordinate),
+                             "0 to " + std::to_string(joint.nv - 1) + " (the coordinates of joint '" + def.joint + "')");
+    if (!def.motion) throw constraint_error(def.name, "motion", "no motion", "a function of time");
+    for (const Constraint& other : model.constraints)
+      if (other.type == Constraint::Type::driver && other.joint_a == index && other.coordinate == def.coordinate)
+        throw constraint_error(def.name, "joint", "coordinate " + std::to_string(def.coordinate) + " of joint '" +
+                                                      def.joint + "', already driven by '" + other.name + "'",
+                               "at most one driver per coordinate");
+    constraint.joint_a = index;
+    constraint.coordinate = def.coordinate;
+    constraint.motion = def.motion;
+    constraint.rows = {{ConstraintRowKind::driver, 0, 0, "prescribed coordinate"}};
+    add(std::move(constraint));
+  }
 }
 
 Model ModelBuilder::build() const {

@@ -83,6 +83,16 @@ struct CouplerDefinition {
   double offset = 0.0;                   // rad or m
 };
 
+/// Prescribes one coordinate of a joint with plain coordinates (revolute, prismatic,
+/// cylindrical, universal): q_joint,coordinate = motion(t).position. The motion's
+/// velocity and acceleration must be its exact time derivatives.
+struct DriverDefinition {
+  std::string name;
+  std::string joint;
+  int coordinate = 0;
+  DriverFunction motion;
+};
+
 class ModelBuilder {
  public:
   static constexpr const char* ground_name = "ground";
@@ -95,6 +105,7 @@ class ModelBuilder {
     distances_.push_back(std::move(constraint));
   }
   void add_coupler(CouplerDefinition coupler) { couplers_.push_back(std::move(coupler)); }
+  void add_driver(DriverDefinition driver) { drivers_.push_back(std::move(driver)); }
 
   /// Checks the topology (each body the child of exactly one joint, no cycle, all
   /// connected to ground), the physical data and the constraints; throws ModelError.
@@ -108,6 +119,7 @@ class ModelBuilder {
   std::vector<LoopJointDefinition> loop_joints_;
   std::vector<DistanceConstraintDefinition> distances_;
   std::vector<CouplerDefinition> couplers_;
+  std::vector<DriverDefinition> drivers_;
 };
 
 }  // namespace heavesim

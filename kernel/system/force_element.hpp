@@ -2,7 +2,9 @@
 // The plug-in point for everything outside the kernel that pushes on bodies:
 // hydrostatics, radiation, waves, mooring, pneumatic and hydraulic compensators,
 // controllers. The kernel knows only this interface.
+#include <span>
 #include <string>
+#include <vector>
 
 #include "kernel/model/data.hpp"
 
@@ -25,6 +27,14 @@ struct AppliedForces {
   VectorX joint_force;                        // nv, generalized forces along joint coordinates
 };
 
+/// One scalar output of a force element (a gas pressure, a stroke, a valve flow), for
+/// recorders: its name, SI units and a description that states sign and frame.
+struct ElementChannel {
+  std::string name;         // e.g. "gas_pressure"; unique within the element
+  std::string units;        // e.g. "Pa"
+  std::string description;  // what it is, its sign convention and frame
+};
+
 /// A force element may own internal states z with dz/dt = g(t, q, v, z)
 /// (radiation memory, gas temperature, chamber pressures, controller integrators).
 /// apply() and state_derivative() see the position and velocity stages in Data.
@@ -42,6 +52,16 @@ class ForceElement {
 
   virtual void state_derivative(double /*t*/, const Model& /*model*/, const Data& /*data*/,
                                 Eigen::Ref<const VectorX> /*z*/, Eigen::Ref<VectorX> /*zdot*/) const {}
+
+  /// The element's output channels, fixed once the element is built (none by default).
+  virtual const std::vector<ElementChannel>& channels() const {
+    static const std::vector<ElementChannel> none;
+    return none;
+  }
+  /// Values of channels() at time t for state z, on the stages in Data (as apply()
+  /// sees them); values.size() == channels().size(). Must not allocate.
+  virtual void outputs(double /*t*/, const Model& /*model*/, const Data& /*data*/, Eigen::Ref<const VectorX> /*z*/,
+                       std::span<double> /*values*/) const {}
 };
 
 }  // namespace heavesim

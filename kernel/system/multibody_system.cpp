@@ -54,12 +54,12 @@ void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
   v_ = y.segment(model.nq, model.nv);
   compute_stages_and_forces(t, y);
   if (model.has_constraints()) {
-    constrained_forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world);
+    constrained_forward_dynamics(model, data_, t, forces_.joint_force, forces_.external_force_world);
     check_constraint_solution(t);
   } else {
     forward_dynamics(model, data_, forces_.joint_force, forces_.external_force_world, settings_.method);
   }
-  if (!data_.qdd.allFinite()) report_non_finite(t);
+  if (!data_.qdd.allFinite()) report_non_finite(t, data_.qdd, "acceleration");
 }
 
 void MultibodySystem::check_constraint_solution(double t) {
@@ -72,14 +72,15 @@ void MultibodySystem::check_constraint_solution(double t) {
   mismatch -= data_.kkt_rhs;
   int worst = 0;
   const double error = mismatch.cwiseAbs().maxCoeff(&worst) / scale;
-  if (!(error <= settings_.kkt_consistency_tolerance))
-    throw NumericalError(t,
-                         "the constraint equations have no solution (singular configuration): the acceleration of " +
-                             describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
-                             std::to_string(error) + ", rank " + std::to_string(data_.kkt_rank) + " of " +
-                             std::to_string(model_->num_constraint_rows) + ")",
-                         "the mechanism has reached a locked or singular position: check the loop geometry, "
-                         "the initial state and the applied loads");
+  if (error <= settings_.kkt_consistency_tolerance) return;
+  const ConstraintRank rank = analyse_constraint_rank(*model_, data_);  // the error path may allocate
+  throw NumericalError(t,
+                       "the constraint equations have no solution (singular configuration): the acceleration of " +
+                           describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
+                           std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
+                           std::to_string(model_->num_constraint_rows) + ")",
+                       "the mechanism has reached a locked or singular position: check the loop geometry, "
+                       "the initial state and the applied loads");
 }
 
 void MultibodySystem::element_state_derivatives(double t, const VectorX& y, const Data& data,
@@ -106,7 +107,7 @@ void MultibodySystem::project(double t, VectorX& y) {
   normalize_configuration(model, q_);
   if (model.has_constraints()) {
     v_ = y.segment(model.nq, model.nv);
-    const ProjectionResult result = project_to_constraints(model, data_, q_, v_, settings_.projection_tolerance,
+    const ProjectionResult result = project_to_constraints(model, data_, t, q_, v_, settings_.projection_tolerance,
                                                            settings_.projection_iterations);
     if (!result.converged) {
       int worst = 0;
@@ -135,18 +136,18 @@ void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reaction
   compute_joint_wrenches(*model_, data_, total_loads_);
 }
 
-void MultibodySystem::report_non_finite(double t) const {
+void MultibodySystem::report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const {
   const Model& model = *model_;
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
-    if (joint.nv > 0 && !data_.qdd.segment(joint.v_index, joint.nv).allFinite())
+    if (joint.nv > 0 && !per_coordinate.segment(joint.v_index, joint.nv).allFinite())
       throw NumericalError(t,
-                           "acceleration of joint '" + joint.name + "' (body '" + model.links[i].name +
-                               "') is not finite",
+                           what + " of joint '" + joint.name + "' (body '" + model.links[i].name + "') is not finite",
                            "check that body's mass and inertia and the forces acting on it; a stiff or "
                            "unstable force element can also produce this");
   }
-  throw NumericalError(t, "accelerations are not finite", "check masses, inertias and applied forces");
+  throw NumericalError(t, what + " is not finite (a force element's state)",
+                       "check the force elements' parameters and initial states");
 }
 
 }  // namespace heavesim

@@ -8,12 +8,15 @@
 //   moves (q, v) back onto Phi = 0, J v = 0.
 // DaeSystem (IDA): the stabilized index-2 (Gear-Gupta-Leimkuhler) form, see
 //   multibody_dae.cpp; y_dae = [q; v; z; lambda (m); mu (m)].
+// SecondOrderSystem (index-3 HHT): the equations of motion with every constraint row,
+//   see second_order_form.cpp and dynamics_derivatives.cpp.
 #include <memory>
 #include <vector>
 
 #include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/system/dae_system.hpp"
 #include "kernel/system/force_element.hpp"
+#include "kernel/system/second_order_system.hpp"
 
 namespace heavesim {
 
@@ -27,7 +30,7 @@ struct SystemSettings {
   double kkt_consistency_tolerance = 1e-6;
 };
 
-class MultibodySystem : public OdeSystem, public DaeSystem {
+class MultibodySystem : public OdeSystem, public DaeSystem, public SecondOrderSystem {
  public:
   explicit MultibodySystem(std::shared_ptr<const Model> model, SystemSettings settings = {});
 
@@ -45,6 +48,20 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y.head(size_); }
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override;
   bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
+
+  // --- SecondOrderSystem (second_order_form.cpp) ---
+  int configuration_size() const override { return model_->nq; }
+  int velocity_size() const override { return model_->nv; }
+  int constraint_size() const override { return model_->num_constraint_rows; }
+  int element_state_size() const override { return size_ - model_->nq - model_->nv; }
+  void integrate_configuration(const VectorX& q, const VectorX& step, VectorX& q_out) const override;
+  void initial_accelerations(double t, const VectorX& y, VectorX& a, VectorX& zdot, VectorX& lambda) override;
+  void dynamics_residual(double t, const VectorX& y, const VectorX& a, const VectorX& zdot, double penalty,
+                         VectorX& lambda, Eigen::Ref<VectorX> r_v, Eigen::Ref<VectorX> r_z,
+                         Eigen::Ref<VectorX> phi) override;
+  void dynamics_derivatives(double t, const VectorX& y, const VectorX& a, DynamicsDerivatives& out) override;
+  void constraint_terms(double t, const VectorX& y, ConstraintTerms& out) override;
+  void constraint_bias_at(double t, const VectorX& y, VectorX& gamma) override;
 
   /// Evaluates the full pipeline at (t, y) for outputs: stages, forces, qdd, constraint
   /// multipliers and, when asked, the joint wrenches (loop forces included).
@@ -72,14 +89,28 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   /// Stages, applied forces and qdd (with lambda for loops) at (t, y).
   void compute_accelerations(double t, const VectorX& y);
   void check_constraint_solution(double t);
-  [[noreturn]] void report_non_finite(double t) const;
+  /// Names the first joint whose entry of per_coordinate (nv) is not finite.
+  [[noreturn]] void report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const;
   void element_state_derivatives(double t, const VectorX& y, const Data& data, Eigen::Ref<VectorX> zdot) const;
   // DAE helpers (multibody_dae.cpp)
   void configuration_maps();                 // dae_N_ and dae_N_plus_ at q_
-  void generalized_applied_force(const Data& base, const AppliedForces& forces, VectorX& out);
-  bool has_applied_state_dependence() const;
   /// Constraint rows in the DAE: the independent ones at the initial state.
   int dae_rows() const { return static_cast<int>(dae_rows_.size()); }
+  // Derivatives (dynamics_derivatives.cpp)
+  /// The GGL form's extra terms: d(J^T mu)/d(tangent q) and d(J v)/d(tangent q).
+  struct GglDerivatives {
+    VectorX mu;
+    MatrixX jt_mu_q, jv_q;
+  };
+  /// Partial derivatives at (t, y, a) with multipliers lambda on constraint rows `rows`;
+  /// leaves the stages and forces at (t, y) and J of those rows in rows_jacobian_.
+  void differentiate_dynamics(double t, const VectorX& y, const VectorX& a, const std::vector<int>& rows,
+                              const VectorX& lambda, DynamicsDerivatives& out, GglDerivatives* ggl);
+  /// Q = tau + sum_i J_i^T f_i of `forces`, mapped with the subspaces in `base`.
+  void generalized_applied_force(const Data& base, const AppliedForces& forces, VectorX& out);
+  /// Joint and element forces at (t, q, v, y's element states) on `stages`, into scratch_forces_.
+  void applied_forces_at(double t, const Data& stages, const VectorX& q, const VectorX& v, const VectorX& y);
+  bool has_applied_state_dependence() const;
 
   std::shared_ptr<const Model> model_;
   SystemSettings settings_;
@@ -93,13 +124,19 @@ class MultibodySystem : public OdeSystem, public DaeSystem {
   int size_;
   VectorX q_, v_, tau_total_, kkt_mismatch_;
   // DAE workspaces (multibody_dae.cpp)
-  VectorX dae_w_, dae_qdot_, dae_qdot_plus_, dae_applied_, dae_applied_plus_, dae_zdot_, dae_zdot_plus_;
-  VectorX dae_q_plus_, dae_vdot_;
-  AlignedVector<Force> dae_subtree_forces_;
+  VectorX dae_w_, dae_qdot_, dae_qdot_plus_, dae_zdot_, dae_vdot_, dae_lambda_;
   MatrixX dae_N_, dae_N_plus_;
   std::vector<int> dae_rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
-  MatrixX dae_jacobian_, dae_jacobian_plus_;  // J of the kept rows; finite-difference column workspace
-  VectorX dae_constraint_;                    // Phi of the kept rows
+  VectorX dae_constraint_;     // Phi of the kept rows
+  DynamicsDerivatives derivatives_;
+  GglDerivatives ggl_derivatives_;
+  // Derivative workspaces (dynamics_derivatives.cpp)
+  MatrixX rows_jacobian_, jacobian_change_;  // J of the rows in use; dJ/d(tangent k)
+  AlignedVector<Force> subtree_forces_;
+  VectorX applied_base_, applied_perturbed_, rates_base_, rates_perturbed_, direction_;
+  VectorX q_perturbed_, v_perturbed_, y_perturbed_;
+  // Second-order form (second_order_form.cpp)
+  VectorX initial_rate_, multiplier_force_;
 };
 
 }  // namespace heavesim

@@ -23,12 +23,13 @@ class Constraints : public ::testing::Test {
     model = std::make_unique<Model>(validation::random_tree(random, options));
     data = std::make_unique<Data>(*model);
   }
-  VectorX residual_at(const VectorX& q) {
+  VectorX residual_at(const VectorX& q, double t = time) {
     VectorX phi(model->num_constraint_rows);
     update_positions(*model, *data, q);
-    constraint_residual(*model, *data, q, phi);
+    constraint_residual(*model, *data, q, t, phi);
     return phi;
   }
+  static constexpr double time = 0.7;  // s; the driver makes Phi depend on t
   std::mt19937_64 random{21};
   std::unique_ptr<Model> model;
   std::unique_ptr<Data> data;
@@ -36,7 +37,8 @@ class Constraints : public ::testing::Test {
 
 TEST_F(Constraints, EveryKindContributesItsRows) {
   // fixed 6 + revolute 5 + prismatic 5 + cylindrical 4 + universal 4 + spherical 3 + distance 1 + coupler 1
-  EXPECT_EQ(model->num_constraint_rows, 29);
+  // + driver 1
+  EXPECT_EQ(model->num_constraint_rows, 30);
 }
 
 TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
@@ -64,13 +66,35 @@ TEST_F(Constraints, BiasIsMinusTheSecondDerivativeAtZeroAcceleration) {
     update_positions(*model, *data, state.q);
     update_velocities(*model, *data, state.q, state.v);
     VectorX gamma(model->num_constraint_rows);
-    constraint_bias(*model, *data, gamma);
+    constraint_bias(*model, *data, time, gamma);
     const double h = 1e-4;
     VectorX q_plus(model->nq), q_minus(model->nq);
     integrate_configuration(*model, state.q, state.v, h, q_plus);
     integrate_configuration(*model, state.q, state.v, -h, q_minus);
-    const VectorX second = (residual_at(q_plus) - 2.0 * residual_at(state.q) + residual_at(q_minus)) / (h * h);
+    const VectorX second = (residual_at(q_plus, time + h) - 2.0 * residual_at(state.q, time) +
+                            residual_at(q_minus, time - h)) /
+                           (h * h);
     EXPECT_LT((gamma + second).norm() / gamma.norm(), 1e-5);
+  }
+}
+
+TEST_F(Constraints, VelocityTargetIsMinusTheTimeDerivative) {
+  // d/dt Phi(q(t), t) = J v - nu along q(t) = q "+" v t.
+  for (int trial = 0; trial < 5; ++trial) {
+    const validation::RandomState state = validation::random_state(*model, random);
+    update_positions(*model, *data, state.q);
+    MatrixX J(model->num_constraint_rows, model->nv);
+    constraint_jacobian(*model, *data, J);
+    VectorX nu(model->num_constraint_rows);
+    constraint_velocity_target(*model, time, nu);
+    EXPECT_GT(nu.cwiseAbs().maxCoeff(), 0.1);  // the driver moves
+    const double h = 1e-6;
+    VectorX q_plus(model->nq), q_minus(model->nq);
+    integrate_configuration(*model, state.q, state.v, h, q_plus);
+    integrate_configuration(*model, state.q, state.v, -h, q_minus);
+    const VectorX rate = (residual_at(q_plus, time + h) - residual_at(q_minus, time - h)) / (2 * h);
+    const VectorX expected = J * state.v - nu;
+    EXPECT_LT((rate - expected).norm() / expected.norm(), 1e-8);
   }
 }
 

@@ -5,10 +5,13 @@
 
 #include <random>
 
+#include "control/active/active_compensator.hpp"
+#include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 #include "kernel/elements/spring_damper.hpp"
+#include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "validation/checks/random_models.hpp"
@@ -92,27 +95,122 @@ std::shared_ptr<const Model> parallelogram() {
   return std::make_shared<const Model>(builder.build());
 }
 
+/// The parallelogram with a spring-damper strut, started on its loop and moving.
+struct StrutFourBar {
+  StrutFourBar() : system(parallelogram()) {
+    system.add_force_element(std::make_unique<SpringDamper>("strut", BodyPoint{0, Vector3(0, -1, 0)},
+                                                            BodyPoint{1, Vector3(0.5, 0, 0)},
+                                                            SpringDamperParameters{100.0, 5.0, 0.5}));
+    VectorX q(3), v(3);
+    q << 0.3, -0.3, 0.3;  // the coupler stays parallel to the ground link
+    v << 1.0, -1.0, 1.0;
+    y = system.initial_state(q, v);
+  }
+  MultibodySystem system;
+  VectorX y;
+};
+
 TEST(NoMalloc, ClosedLoopDaeResidualDoesNotAllocate) {
-  auto model = parallelogram();
-  MultibodySystem system(model);
-  system.add_force_element(std::make_unique<SpringDamper>("strut", BodyPoint{0, Vector3(0, -1, 0)},
-                                                          BodyPoint{1, Vector3(0.5, 0, 0)},
-                                                          SpringDamperParameters{100.0, 5.0, 0.5}));
-  VectorX q(3), v(3);
-  q << 0.3, -0.3, 0.3;  // the coupler stays parallel to the ground link
-  v << 1.0, -1.0, 1.0;
-  VectorX y = system.initial_state(q, v), ydot(system.size());
+  StrutFourBar four_bar;
+  MultibodySystem& system = four_bar.system;
   VectorX dae_y, dae_yp;
   // Sizes the DAE's workspaces (and picks its independent rows): allowed to allocate.
-  system.dae_initial_values(0.0, y, dae_y, dae_yp);
+  system.dae_initial_values(0.0, four_bar.y, dae_y, dae_yp);
   VectorX residual(dae_y.size());
   system.residual(0.0, dae_y, dae_yp, residual);
-  // The explicit methods' path (system.derivative, system.project) is not covered:
-  // Eigen's CompleteOrthogonalDecomposition::solve, which gives the minimum-norm
-  // multipliers, copies its right-hand side into a heap temporary (found by this
-  // test; docs/performance.md lists it as open).
   ForbidAllocation forbid;
   EXPECT_NO_THROW(system.residual(0.0, dae_y, dae_yp, residual));
+}
+
+TEST(NoMalloc, ClosedLoopExplicitPathDoesNotAllocate) {
+  // The KKT solve (minimum-norm multipliers by the regularized Cholesky of J M^-1 J^T)
+  // and the projection after each explicit step.
+  StrutFourBar four_bar;
+  VectorX ydot(four_bar.system.size());
+  four_bar.system.derivative(0.0, four_bar.y, ydot);  // first use sizes the workspaces
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW(four_bar.system.derivative(0.0, four_bar.y, ydot));
+  EXPECT_NO_THROW(four_bar.system.project(0.0, four_bar.y));
+}
+
+TEST(NoMalloc, HhtStepsDoNotAllocate) {
+  StrutFourBar four_bar;
+  IntegratorSettings settings;
+  settings.method = IntegrationMethod::hht;
+  settings.step = 1e-3;
+  auto integrator = make_integrator(settings);
+  integrator->initialize(four_bar.system, 0.0, four_bar.y);
+  integrator->advance_to(0.002);  // first steps size every workspace
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW(integrator->advance_to(0.05));
+}
+
+/// A platform heaving on a prismatic joint, a load on the stroke joint, and every
+/// compensator state the control library has: gas temperature, PID integral,
+/// centring reference, MRU filter, force-actuator lag, spool and chamber pressures.
+std::unique_ptr<MultibodySystem> compensated_rig() {
+  ModelBuilder builder;
+  builder.add_body({"platform", Inertia(1e6, Vector3::Zero(), Matrix3::Identity() * 1e8), std::nullopt});
+  builder.add_body({"load", Inertia(2.9e5, Vector3::Zero(), Matrix3::Identity() * 1e6), std::nullopt});
+  JointDefinition heave, stroke;
+  heave.name = "heave";
+  heave.kind = stroke.kind = JointKind::prismatic;
+  heave.parent = "ground";
+  heave.child = stroke.parent = "platform";
+  stroke.name = "stroke";
+  stroke.child = "load";
+  builder.add_joint(heave);
+  builder.add_joint(stroke);
+  auto model = std::make_shared<const Model>(builder.build());
+  auto system = std::make_unique<MultibodySystem>(model);
+  const StrokeAxis joint_axis = StrokeAxis::on_joint(*model, 2, 0.0);
+  const StrokeAxis body_axis = StrokeAxis::between(*model, BodyPoint{1, Vector3::Zero()}, BodyPoint{2, Vector3::Zero()},
+                                                   Vector3::UnitZ(), 0.0);
+  PneumaticParameters gas;
+  gas.cooling = GasCooling{30.0, 288.15};
+  gas.exponent_compression = 1.3;
+  gas.piping = piping_loss_from_pipe(30.0, 0.2, 0.05, 870.0, 3.0);
+  gas.friction = {26e3, 1e3, 0.01};
+  system->add_force_element(std::make_unique<PneumaticCompensator>("passive", joint_axis, gas));
+  ActiveCompensatorParameters hydraulic;
+  hydraulic.actuator = ActuatorType::hydraulic;
+  hydraulic.gains = {0.5, 0.05, 0.2, 0.0, 1.0};
+  hydraulic.velocity_feedforward = 0.3;
+  hydraulic.acceleration_feedforward = 0.01;
+  hydraulic.centring_time = 60.0;
+  hydraulic.mru = MruParameters{};
+  hydraulic.controlled_point = BodyPoint{2, Vector3::Zero()};
+  system->add_force_element(std::make_unique<ActiveCompensator>("hydraulic", body_axis, hydraulic));
+  ActiveCompensatorParameters force;
+  force.gains = {1e6, 2e5, 9e5, 0.0, 3.9e5};
+  force.force_actuator.max_rate = 1e6;
+  force.controlled_point = BodyPoint{2, Vector3::Zero()};
+  system->add_force_element(std::make_unique<ActiveCompensator>("force", joint_axis, force));
+  return system;
+}
+
+TEST(NoMalloc, CompensatorsDoNotAllocate) {
+  auto system = compensated_rig();
+  VectorX q(2), v(2);
+  q << 0.3, -0.4;
+  v << 0.5, -0.2;
+  VectorX y = system->initial_state(q, v), ydot(system->size());
+  std::vector<std::vector<double>> values;
+  for (const auto& element : system->force_elements()) values.emplace_back(element->channels().size());
+  VectorX dae_y, dae_yp;
+  system->dae_initial_values(0.0, y, dae_y, dae_yp);
+  VectorX residual(dae_y.size());
+  system->residual(0.0, dae_y, dae_yp, residual);
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW(system->derivative(0.0, y, ydot));  // apply() and state_derivative() of each element
+  EXPECT_NO_THROW(system->residual(0.0, dae_y, dae_yp, residual));
+  EXPECT_NO_THROW({
+    for (std::size_t e = 0; e < values.size(); ++e) {
+      const ForceElement& element = *system->force_elements()[e];
+      element.outputs(0.0, system->model(), system->data(), y.segment(system->state_offset(e), element.state_size()),
+                      values[e]);
+    }
+  });
 }
 
 }  // namespace

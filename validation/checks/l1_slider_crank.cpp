@@ -72,6 +72,7 @@ std::vector<ValidationRow> check_l1_slider_crank() {
       {"Dormand-Prince + projection, rtol = atol = 1e-10",
        {"solver.integrator=dopri5", "solver.rtol=1e-10", "solver.atol=1e-10"}},
       {"RK4 + projection, h = 1 ms", {"solver.integrator=rk4", "solver.step=1e-3"}},
+      {"HHT index-3 (trapezoidal), h = 0.5 ms", {"solver.integrator=hht", "solver.step=5e-4"}},
   };
   for (const auto& [label, overrides] : runs)
     rows.push_back({"L1", "slider-crank 10 s, " + label, "positions (rad, m) vs minimal-coordinate oracle",

@@ -1,5 +1,7 @@
 #include "validation/checks/random_models.hpp"
 
+#include <cmath>
+
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/model/model_builder.hpp"
 
@@ -87,6 +89,11 @@ Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options) {
     builder.add_distance_constraint({"rod", "body0", "body" + std::to_string(options.bodies - 1),
                                      random_vector(random, 0.3), random_vector(random, 0.3), 1.3});
     builder.add_coupler({"gear", "joint1", options.bodies > 8 ? "joint8" : "joint2", -0.7, 0.2});
+    // joint3 is cylindrical (kinds[3]): prescribe its translation.
+    builder.add_driver({"push", "joint3", 1, [](double t) {
+                          return DriverMotion{0.2 * std::sin(1.3 * t) + 0.1 * t * t, 0.26 * std::cos(1.3 * t) + 0.2 * t,
+                                              -0.338 * std::sin(1.3 * t) + 0.2};
+                        }});
   }
   return builder.build();
 }

@@ -13,7 +13,7 @@ struct RandomTreeOptions {
   bool joint_springs = true;   // springs/dampers on scalar joints
   bool chain = false;          // a serial chain instead of a random tree
   bool only_revolute = false;  // all joints revolute (benchmark chains)
-  bool constraints = false;    // also loop joints of every kind, a distance and a coupler
+  bool constraints = false;    // also loop joints of every kind, a distance, a coupler and a driver
 };
 
 Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options);

@@ -18,6 +18,14 @@ const std::vector<ValidationCheck>& validation_checks() {
       {"L1", "slider-crank of SUNDIALS' idaSlCrank_dns (loop joint, spring-damper, push) vs a minimal-coordinate "
              "oracle and the example's printout",
        check_l1_slider_crank},
+      {"L2", "IFToMM A02 N-four-bar (N = 1, 2) through every singular pass vs the exact parallelogram motion",
+       check_l2_four_bar},
+      {"C1", "passive compensator under prescribed platform heave vs the linear transmissibility k / (k - M w^2)",
+       check_c1_passive_compensator},
+      {"C2", "static equilibrium of the H0 (rigid and elastic string) and H0b rigs (platform held): joint reactions vs "
+             "hanging weights",
+       check_c2_static_rig},
+      {"C3", "gas-spring energy: integral F ds vs the polytropic work (p V) / (n - 1) change", check_c3_gas_spring_energy},
   };
   return checks;
 }

@@ -1,0 +1,90 @@
+#include "app/output/compensator_summary.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace heavesim {
+
+CompensatorSummary::CompensatorSummary(const MultibodySystem& system) : system_(system) {
+  const auto& elements = system.force_elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (auto* pneumatic = dynamic_cast<const PneumaticCompensator*>(elements[e].get()))
+      passive_.push_back({pneumatic, system.state_offset(e), EndStopMonitor(pneumatic->parameters().end_stops)});
+    if (auto* active = dynamic_cast<const ActiveCompensator*>(elements[e].get()))
+      active_.push_back({active, system.state_offset(e)});
+  }
+}
+
+void CompensatorSummary::observe(double t, const VectorX& y) {
+  const Model& model = system_.model();
+  const Data& data = system_.data();
+  for (Passive& p : passive_) {
+    const PneumaticState s = p.element->evaluate(t, model, data, y.segment(p.offset, p.element->state_size()), nullptr);
+    p.monitor.observe(s.stroke);
+    p.max_stroke = std::max(p.max_stroke, s.stroke);
+    p.min_stroke = std::min(p.min_stroke, s.stroke);
+    p.max_pressure = std::max(p.max_pressure, s.gas_pressure);
+    p.min_pressure = std::min(p.min_pressure, s.gas_pressure);
+    p.max_temperature = std::max(p.max_temperature, s.gas_temperature);
+    p.min_temperature = std::min(p.min_temperature, s.gas_temperature);
+  }
+  for (Active& a : active_) {
+    const ActiveState s = a.element->evaluate(t, model, data, y.segment(a.offset, a.element->state_size()), nullptr);
+    a.max_force = std::max(a.max_force, std::abs(s.force));
+    a.max_error = std::max(a.max_error, std::abs(s.error));
+    a.max_supply_power = std::max(a.max_supply_power, s.supply_power);
+    if (a.samples == 0) a.first_time = t;
+    if (a.samples > 0) a.supply_energy += 0.5 * (s.supply_power + a.last_supply_power) * (t - a.last_time);  // trapezoid
+    a.last_supply_power = s.supply_power;
+    a.last_time = t;
+    ++a.samples;
+  }
+}
+
+void CompensatorSummary::write(ResultFile& file) const {
+  for (const Passive& p : passive_) {
+    const std::string prefix = p.element->name() + "_";
+    file.set_attribute("/summary", prefix + "stroke_min_m", p.min_stroke);
+    file.set_attribute("/summary", prefix + "stroke_max_m", p.max_stroke);
+    file.set_attribute("/summary", prefix + "end_stop_events_lower", p.monitor.lower_events());
+    file.set_attribute("/summary", prefix + "end_stop_events_upper", p.monitor.upper_events());
+    file.set_attribute("/summary", prefix + "end_stop_max_penetration_m", p.monitor.max_penetration());
+    file.set_attribute("/summary", prefix + "gas_pressure_min_Pa", p.min_pressure);
+    file.set_attribute("/summary", prefix + "gas_pressure_max_Pa", p.max_pressure);
+    file.set_attribute("/summary", prefix + "gas_temperature_min_K", p.min_temperature);
+    file.set_attribute("/summary", prefix + "gas_temperature_max_K", p.max_temperature);
+  }
+  for (const Active& a : active_) {
+    const std::string prefix = a.element->name() + "_";
+    file.set_attribute("/summary", prefix + "force_max_abs_N", a.max_force);
+    file.set_attribute("/summary", prefix + "control_error_max_abs_m", a.max_error);
+    if (a.element->parameters().actuator == ActuatorType::hydraulic) {
+      file.set_attribute("/summary", prefix + "supply_power_max_W", a.max_supply_power);
+      file.set_attribute("/summary", prefix + "supply_energy_J", a.supply_energy);
+    }
+  }
+}
+
+std::vector<std::string> CompensatorSummary::headlines() const {
+  std::vector<std::string> lines;
+  for (const Passive& p : passive_) {
+    const EndStops& stops = p.element->parameters().end_stops;
+    lines.push_back(fmt::format(
+        "compensator '{}': stroke {:.4g} .. {:.4g} m (stops {:g} .. {:g}), end-stop contacts {} lower / {} upper, "
+        "gas pressure {:.5g} .. {:.5g} MPa, temperature {:.4g} .. {:.4g} K",
+        p.element->name(), p.min_stroke, p.max_stroke, stops.lower, stops.upper, p.monitor.lower_events(),
+        p.monitor.upper_events(), p.min_pressure * 1e-6, p.max_pressure * 1e-6, p.min_temperature, p.max_temperature));
+  }
+  for (const Active& a : active_) {
+    std::string line = fmt::format("compensator '{}': peak force {:.4g} kN, peak control error {:.4g} m",
+                                   a.element->name(), a.max_force * 1e-3, a.max_error);
+    if (a.element->parameters().actuator == ActuatorType::hydraulic && a.last_time > a.first_time)
+      line += fmt::format(", hydraulic power peak {:.4g} kW, mean {:.4g} kW", a.max_supply_power * 1e-3,
+                          a.supply_energy / (a.last_time - a.first_time) * 1e-3);
+    lines.push_back(line);
+  }
+  return lines;
+}
+
+}  // namespace heavesim

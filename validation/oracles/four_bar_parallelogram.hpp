@@ -1,0 +1,19 @@
+#pragma once
+// Oracle for validation L2: IFToMM benchmark A02, the N-four-bar (N windows, N + 1
+// vertical cranks of length 1 m and N couplers, every rod 1 kg, 1 m, uniform). On the
+// parallelogram branch every crank turns by the same angle q from upright and the
+// couplers only translate, so the mechanism has one coordinate and Lagrange gives
+//   q'' = g sin q ((N + 1)/2 + N) / ((N + 1)/3 + N),   q(0) = 0, q'(0) = 1 rad/s
+// (kinetic energy (N+1) q'^2/6 of the cranks about their pivots plus N q'^2/2 of the
+// translating couplers; potential g cos q ((N+1)/2 + N)). Integrated by ARKODE
+// Fehlberg 8(7): it shares nothing with the multibody model.
+#include <vector>
+
+namespace heavesim::oracle {
+
+/// The crank angle q [rad] at each time [s] (ascending, > 0), for N windows and
+/// gravity g [m/s^2].
+std::vector<double> four_bar_crank_angles(int windows, double gravity, const std::vector<double>& times,
+                                          double tolerance);
+
+}  // namespace heavesim::oracle
