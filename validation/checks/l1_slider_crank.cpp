@@ -5,8 +5,6 @@
 // output the example prints (shipped with libsundials-dev).
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -41,21 +39,6 @@ double max_error(const Samples& run, const std::vector<Eigen::Vector3d>& referen
   return error;
 }
 
-/// Rows "t y1 y2 y3 nst k h" of the example's printed output.
-std::vector<std::pair<double, Eigen::Vector3d>> read_example_output() {
-  std::vector<std::pair<double, Eigen::Vector3d>> rows;
-  std::ifstream file(example_output);
-  std::string line;
-  while (std::getline(file, line)) {
-    std::istringstream fields(line);
-    double t, y1, y2, y3, steps, order, h;
-    std::string rest;
-    if (fields >> t >> y1 >> y2 >> y3 >> steps >> order >> h && !(fields >> rest))
-      rows.emplace_back(t, Eigen::Vector3d(y1, y2, y3));
-  }
-  return rows;
-}
-
 }  // namespace
 
 std::vector<ValidationRow> check_l1_slider_crank() {
@@ -80,7 +63,7 @@ std::vector<ValidationRow> check_l1_slider_crank() {
 
   // The example's own printout (5 digits, its run at rtol = atol = 1e-6): the same
   // tolerances here must reproduce it to its printed precision plus both runs' error.
-  const auto printed = read_example_output();
+  const auto printed = oracle::read_ida_slider_crank_printout(example_output);
   if (!printed.empty()) {
     const Samples loose = run({});
     double error = 0.0;

@@ -1,6 +1,8 @@
 #include "validation/oracles/slider_crank.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "validation/oracles/reference_integrator.hpp"
 
@@ -61,6 +63,20 @@ std::vector<Eigen::Vector3d> slider_crank_positions(const SliderCrankParameters&
   std::vector<Eigen::Vector3d> positions;
   for (const Eigen::VectorXd& y : states) positions.push_back(coordinates(p, y[0]).s);
   return positions;
+}
+
+std::vector<std::pair<double, Eigen::Vector3d>> read_ida_slider_crank_printout(const std::string& path) {
+  std::vector<std::pair<double, Eigen::Vector3d>> rows;
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    std::istringstream fields(line);
+    double t, y1, y2, y3, steps, order, h;
+    std::string rest;
+    if (fields >> t >> y1 >> y2 >> y3 >> steps >> order >> h && !(fields >> rest))
+      rows.emplace_back(t, Eigen::Vector3d(y1, y2, y3));
+  }
+  return rows;
 }
 
 }  // namespace heavesim::oracle

@@ -9,6 +9,8 @@
 // with M = diag(J1, m2, J2) and Q the generalized forces of the spring-damper between
 // the crank and rod midpoints and of the horizontal push on the rod line.
 #include <Eigen/Core>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace heavesim::oracle {
@@ -25,5 +27,9 @@ struct SliderCrankParameters {
 /// (theta, x, phi) at each time, from theta(0) = pi/2, theta'(0) = 0; ARKODE Fehlberg 8(7).
 std::vector<Eigen::Vector3d> slider_crank_positions(const SliderCrankParameters& p, const std::vector<double>& times,
                                                     double tolerance);
+
+/// The rows "t y1 y2 y3 nst k h" of idaSlCrank_dns's printed output (the file the
+/// example writes to standard output): (t, (theta, x, phi)); other lines are skipped.
+std::vector<std::pair<double, Eigen::Vector3d>> read_ida_slider_crank_printout(const std::string& path);
 
 }  // namespace heavesim::oracle
