@@ -48,6 +48,9 @@ struct OutputSettings {
   bool reactions = true;   // /joints/<name>/reaction_force, reaction_moment (+ joint axes)
   bool energy = true;      // /signals/kinetic_energy, potential_energy, total_energy
   bool forces = true;      // /forces/<element>/<channel>: force-element outputs (compensators)
+  /// s: start of the window the summary statistics (compensation efficiency) are taken
+  /// over, after transients and wave ramps; default the middle of the record.
+  double evaluate_after = 0.0;
 };
 
 struct CaseDefinition {

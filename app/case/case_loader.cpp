@@ -510,8 +510,14 @@ void read_output(const std::optional<NodeReader>& reader, CaseDefinition& defini
   OutputSettings& output = definition.output;
   const double duration = definition.solver.t_end - definition.solver.t_start;
   output.interval = std::min(0.01, duration / 100.0);
+  output.evaluate_after = definition.solver.t_start + 0.5 * duration;
   if (!reader) return;
-  reader->expect_map({"interval", "channels"});
+  reader->expect_map({"interval", "channels", "evaluate_after"});
+  if (auto evaluate_after = reader->optional("evaluate_after")) {
+    output.evaluate_after = evaluate_after->number();
+    if (output.evaluate_after < definition.solver.t_start || output.evaluate_after >= definition.solver.t_end)
+      evaluate_after->fail(fmt::format("{:g} s, outside the run", output.evaluate_after), "t_start <= evaluate_after < t_end");
+  }
   if (auto interval = reader->optional("interval")) {
     output.interval = interval->positive_number();
     if (output.interval > duration)

@@ -1,12 +1,14 @@
 #include "app/output/compensator_summary.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
 namespace heavesim {
 
-CompensatorSummary::CompensatorSummary(const MultibodySystem& system) : system_(system) {
+CompensatorSummary::CompensatorSummary(const MultibodySystem& system, double evaluate_after)
+    : system_(system), evaluate_after_(evaluate_after) {
   const auto& elements = system.force_elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     if (auto* pneumatic = dynamic_cast<const PneumaticCompensator*>(elements[e].get()))
@@ -28,6 +30,13 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
     p.min_pressure = std::min(p.min_pressure, s.gas_pressure);
     p.max_temperature = std::max(p.max_temperature, s.gas_temperature);
     p.min_temperature = std::min(p.min_temperature, s.gas_temperature);
+    if (t >= evaluate_after_ - 1e-9) {
+      // The moving side sits (mid-stroke + s) along the stroke axis from the base.
+      const StrokeAxis& axis = p.element->axis();
+      const BaseMotion base = base_motion(axis, model, data);
+      p.base_height.add(base.position_world.z());
+      p.load_height.add(base.position_world.z() + base.axis_world.z() * (axis.mid_stroke + s.stroke));
+    }
   }
   for (Active& a : active_) {
     const ActiveState s = a.element->evaluate(t, model, data, y.segment(a.offset, a.element->state_size()), nullptr);
@@ -42,9 +51,21 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
   }
 }
 
+double CompensatorSummary::efficiency(std::size_t k) const {
+  const Passive& p = passive_[k];
+  const double base = p.base_height.standard_deviation();
+  if (p.base_height.count() < 2 || base <= 1e-12) return std::numeric_limits<double>::quiet_NaN();
+  return 1.0 - p.load_height.standard_deviation() / base;
+}
+
 void CompensatorSummary::write(ResultFile& file) const {
-  for (const Passive& p : passive_) {
+  for (std::size_t k = 0; k < passive_.size(); ++k) {
+    const Passive& p = passive_[k];
     const std::string prefix = p.element->name() + "_";
+    if (std::isfinite(efficiency(k))) file.set_attribute("/summary", prefix + "efficiency", efficiency(k));
+    file.set_attribute("/summary", prefix + "efficiency_window_start_s", evaluate_after_);
+    file.set_attribute("/summary", prefix + "base_heave_std_m", p.base_height.standard_deviation());
+    file.set_attribute("/summary", prefix + "load_heave_std_m", p.load_height.standard_deviation());
     file.set_attribute("/summary", prefix + "stroke_min_m", p.min_stroke);
     file.set_attribute("/summary", prefix + "stroke_max_m", p.max_stroke);
     file.set_attribute("/summary", prefix + "end_stop_events_lower", p.monitor.lower_events());
@@ -68,8 +89,14 @@ void CompensatorSummary::write(ResultFile& file) const {
 
 std::vector<std::string> CompensatorSummary::headlines() const {
   std::vector<std::string> lines;
-  for (const Passive& p : passive_) {
+  for (std::size_t k = 0; k < passive_.size(); ++k) {
+    const Passive& p = passive_[k];
     const EndStops& stops = p.element->parameters().end_stops;
+    if (std::isfinite(efficiency(k)))
+      lines.push_back(fmt::format("compensator '{}': efficiency {:.4f} (1 - std of the load's heave {:.4g} m / std of "
+                                  "the derrick top's {:.4g} m, from t = {:g} s)",
+                                  p.element->name(), efficiency(k), p.load_height.standard_deviation(), p.base_height.standard_deviation(),
+                                  evaluate_after_));
     lines.push_back(fmt::format(
         "compensator '{}': stroke {:.4g} .. {:.4g} m (stops {:g} .. {:g}), end-stop contacts {} lower / {} upper, "
         "gas pressure {:.5g} .. {:.5g} MPa, temperature {:.4g} .. {:.4g} K",

@@ -2,8 +2,15 @@
 // Headline numbers of the compensators in a run, gathered at every output sample:
 // stroke usage, end-stop contacts (EndStopMonitor: counted at the output rate),
 // gas pressure and temperature ranges; for active compensators the largest force,
-// control error and hydraulic power. Written as /summary attributes and printed by
-// `heavesim run`.
+// control error and hydraulic power; and the compensation efficiency
+//   eta = 1 - sigma(z_load) / sigma(z_base)
+// over the evaluation window (output.evaluate_after to the end): z_base the world height
+// [m] of the stroke's base (the derrick top), z_load that of the moving side (the crown
+// block, rigidly carrying the string on H0), sigma the standard deviation over the
+// window's samples. For a steady sinusoid sigma ratio = amplitude ratio, so this is the
+// regular-wave definition of offshore-model.md sec. 5.2 too (eta = 1 - Z_ds / Z_dt).
+// Written as /summary attributes and printed by `heavesim run`.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -14,12 +21,34 @@
 
 namespace heavesim {
 
+/// Welford's running mean and variance (numerically stable for large offsets such as
+/// a derrick height of 60 m moving by 1 m).
+class RunningVariance {
+ public:
+  void add(double x) {
+    ++count_;
+    const double delta = x - mean_;
+    mean_ += delta / static_cast<double>(count_);
+    sum_squares_ += delta * (x - mean_);
+  }
+  long count() const { return count_; }
+  double standard_deviation() const { return count_ > 1 ? std::sqrt(sum_squares_ / static_cast<double>(count_)) : 0.0; }
+
+ private:
+  long count_ = 0;
+  double mean_ = 0.0, sum_squares_ = 0.0;
+};
+
 class CompensatorSummary {
  public:
-  explicit CompensatorSummary(const MultibodySystem& system);
+  /// `evaluate_after` [s]: start of the efficiency window.
+  CompensatorSummary(const MultibodySystem& system, double evaluate_after);
   /// After system.evaluate(t, y): takes one sample.
   void observe(double t, const VectorX& y);
   void write(ResultFile& file) const;
+  /// 1 - sigma(z_load) / sigma(z_base) of passive compensator k over the window; NaN if
+  /// the base did not move (nothing to compensate) or the window holds < 2 samples.
+  double efficiency(std::size_t k) const;
   /// One line per compensator.
   std::vector<std::string> headlines() const;
 
@@ -30,6 +59,7 @@ class CompensatorSummary {
     EndStopMonitor monitor;
     double max_stroke = -1e300, min_stroke = 1e300, max_pressure = -1e300, min_pressure = 1e300;
     double max_temperature = -1e300, min_temperature = 1e300;
+    RunningVariance base_height{}, load_height{};  // m, over the evaluation window
   };
   struct Active {
     const ActiveCompensator* element;
@@ -40,6 +70,7 @@ class CompensatorSummary {
     long samples = 0;
   };
   const MultibodySystem& system_;
+  double evaluate_after_;
   std::vector<Passive> passive_;
   std::vector<Active> active_;
 };

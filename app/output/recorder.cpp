@@ -40,7 +40,7 @@ std::string speed_units(const JointType& type, const std::string& per) {
 }  // namespace
 
 Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
-    : scene_(scene), file_(file), csv_(csv), compensators_(*scene.system) {
+    : scene_(scene), file_(file), csv_(csv), compensators_(*scene.system, definition.output.evaluate_after) {
   define_channels(definition);
   if (file_) {
     // HDF5 lists groups alphabetically; keep the model's (topological) order too.

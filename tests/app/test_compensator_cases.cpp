@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -111,6 +113,29 @@ TEST(CompensatorCases, PrescribedHeaveEfficiencyOfThePassiveAndActiveH0) {
     else
       EXPECT_GE(efficiency, 0.95) << "offshore-model.md §5.2: passive + active >= 0.95";
     std::filesystem::remove(output);
+  }
+}
+
+// The summary's efficiency 1 - sigma(z_load) / sigma(z_base) against the linear
+// transmissibility of validation C1 (undamped gas spring, small heave, the load started
+// on its forced response, so both heights are pure sinusoids at w: the sigma ratio is
+// the amplitude ratio whatever the sampling). The window is set to whole periods.
+TEST(CompensatorCases, SummaryEfficiencyMatchesTheLinearTransmissibility) {
+  constexpr double M = 290000.0, A = 0.1735, V0 = 60.0, n = 1.4, p_atm = 101325.0, g = 9.81;
+  const double k = n * (p_atm + M * g / A) * A * A / V0;
+  for (double period : {8.0, 12.0}) {
+    const std::string output = temporary(fmt::format("c1_efficiency_{:g}.h5", period));
+    const testing::CommandResult result =
+        run("cases/validation/c1_passive_compensator.yaml", output,
+            fmt::format("--set parameters.T={:g} --set output.evaluate_after=0.3*T", period));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("compensator 'passive': efficiency"), std::string::npos) << result.output;
+    const double w = 2.0 * M_PI / period;
+    const double expected = 1.0 - std::abs(k / (k - M * w * w));
+    H5File file(output);
+    ASSERT_TRUE(file.ok());
+    EXPECT_NEAR(file.double_attribute("/summary", "passive_efficiency"), expected, 1e-4) << "T = " << period;
+    EXPECT_NEAR(file.double_attribute("/summary", "passive_efficiency_window_start_s"), 0.3 * period, 1e-12);
   }
 }
 
