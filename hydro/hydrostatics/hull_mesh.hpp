@@ -11,7 +11,7 @@
 namespace heavesim::hydro {
 
 struct HullPanel {
-  std::array<Vector3, 4> vertices;  // m, body frame; the first num_vertices are used
+  std::array<Vector3, 4> vertices{Vector3::Zero(), Vector3::Zero(), Vector3::Zero(), Vector3::Zero()};  // m, body frame; the first num_vertices are used
   int num_vertices = 4;             // 3 or 4
 };
 

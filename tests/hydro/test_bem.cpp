@@ -38,7 +38,9 @@ TEST(HydroBem, H7SemisubCoefficientsMatchPublishedNumbers) {
       EXPECT_GT(r.added_mass[n](2, 2), 7.09e7) << T;
       EXPECT_LT(r.added_mass[n](2, 2), 7.22e7) << T;
     }
-    if (std::abs(T - 6.2) < 1e-9) EXPECT_NEAR(r.damping[n](2, 2), 2.09e7, 0.01e7);
+    if (std::abs(T - 6.2) < 1e-9) {
+      EXPECT_NEAR(r.damping[n](2, 2), 2.09e7, 0.01e7);
+    }
   }
   for (int i = 0; i < 6; ++i) {  // radiation damping is not negative (beyond round-off)
     double largest = 0.0;
@@ -58,7 +60,9 @@ TEST(HydroBem, H7SemisubCoefficientsMatchPublishedNumbers) {
   for (size_t n = 0; n < x.angular_frequencies.size(); ++n) {
     const double magnitude = std::abs(x.force[0][n][2]);
     if (magnitude > peak) peak = magnitude, peak_period = 2 * M_PI / x.angular_frequencies[n];
-    if (std::abs(2 * M_PI / x.angular_frequencies[n] - 20.0) < 1e-9) EXPECT_NEAR(magnitude, 3.8e5, 0.1e5);
+    if (std::abs(2 * M_PI / x.angular_frequencies[n] - 20.0) < 1e-9) {
+      EXPECT_NEAR(magnitude, 3.8e5, 0.1e5);
+    }
   }
   EXPECT_NEAR(peak, 9.5e6, 0.1e6);
   EXPECT_NEAR(peak_period, 12.0, 1.5);
