@@ -14,6 +14,10 @@ void RadiationConvolution::apply(double t, const Model& model, const Data& data,
   const double dt = kernel_.time_step;
   const long size = static_cast<long>(history_.size());
   const long current = static_cast<long>(std::floor(t / dt + 1e-9));  // t_n <= t
+  if (current <= 0 && newest_sample_ > 1) {  // a new run from t = 0 with this element: forget the old one
+    for (Vector6& sample : history_) sample.setZero();
+    newest_sample_ = -1;
+  }
   // Store the samples this evaluation is the first to reach (a jump of several steps
   // repeats the current velocity; the run starts from rest: older samples are zero).
   for (long n = std::max(newest_sample_ + 1, current - size + 1); n <= current; ++n) history_[n % size] = m.velocity;

@@ -8,8 +8,9 @@
 // implicit integrators a stored sample can come from a trial stage -- use the
 // state-space RadiationMemory there. The newest, partial interval uses the current
 // velocity; older ones the trapezoidal rule on the stored samples. The buffer is
-// sized in the constructor; apply() does not allocate. Not thread-safe (the buffer is
-// mutable state of a const apply()).
+// sized in the constructor; apply() does not allocate. The body starts from rest
+// (older samples are zero); an evaluation back at t <= 0 after a run starts afresh.
+// Not thread-safe (the buffer is mutable state of a const apply()).
 #include "hydro/elements/body_motion.hpp"
 #include "hydro/radiation/retardation_kernel.hpp"
 

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include "hydro/data_error.hpp"
+#include "hydro/hydrostatics/froude_krylov.hpp"
 #include "hydro/hydrostatics/wetted_hull.hpp"
 #include "tests/test_support.hpp"
 
@@ -143,6 +144,33 @@ TEST(HydroHydrostatics, StlTriangleMeshMatchesQuadMesh) {
   expect_relative(b.volume, a.volume, 1e-12, "V");
   expect_relative(b.centre_of_buoyancy.z(), a.centre_of_buoyancy.z(), 1e-12, "z_B");
   expect_relative(a.volume, 10 * 6 * 3, 1e-12, "V box");
+}
+
+// Nonlinear Froude-Krylov: in still water it is the clipped buoyancy; in a small
+// regular wave over a box (20 x 10 m, 5 m draft, deep water, T = 8 s, a = 1 cm) the
+// force beyond rho g V is the linear Froude-Krylov force, in closed form
+//   F3 = rho g a B e^{-kT} (2/k) sin(kL/2) cos(wt)          (bottom),
+//   F1 = -2 rho g a B sin(kL/2) (1 - e^{-kT})/k sin(wt)     (end walls),
+// to O(k a) = 6e-4 relative.
+TEST(HydroHydrostatics, FroudeKrylovMatchesLinearTheoryInSmallWaves) {
+  const double L = 20.0, B = 10.0, T = 5.0, H = 10.0;
+  const HullMesh mesh = box_mesh(Vector3(L, B, H), Vector3::Zero(), 8);
+  const Transform X = at(Vector3(0, 0, 0.5 * H - T));
+  const WettedHull still = wetted_hull(mesh, X, rho, g);
+  const FroudeKrylovLoad calm = froude_krylov_load(mesh, X, regular_wave(0.0, 8.0), 0.0, rho, g);
+  EXPECT_LE((calm.force - still.buoyancy_force).norm(), 1e-10 * still.buoyancy_force.norm());
+  EXPECT_LE((calm.moment - still.buoyancy_moment).norm(), 1e-10 * still.buoyancy_force.norm() * L);
+  const double a = 0.01, period = 8.0, w = 2 * M_PI / period, k = w * w / g;
+  const WaveTrain wave = regular_wave(2 * a, period, 0.0, 0.0, infinite_depth, {}, g);
+  const double heave_amplitude = rho * g * a * B * std::exp(-k * T) * 2 / k * std::sin(k * L / 2);
+  const double surge_amplitude = 2 * rho * g * a * B * std::sin(k * L / 2) * (1 - std::exp(-k * T)) / k;
+  for (double t : {0.0, period / 4, period / 3}) {
+    const FroudeKrylovLoad load = froude_krylov_load(mesh, X, wave, t, rho, g);
+    const double heave = load.force.z() - rho * g * still.volume, surge = load.force.x();
+    EXPECT_NEAR(heave, heave_amplitude * std::cos(w * t), 1e-3 * heave_amplitude) << t;
+    EXPECT_NEAR(surge, -surge_amplitude * std::sin(w * t), 1e-3 * surge_amplitude) << t;
+    EXPECT_NEAR(load.force.y(), 0.0, 1e-9 * surge_amplitude);
+  }
 }
 
 TEST(HydroHydrostatics, BadGdfNamesFileAndLine) {

@@ -3,6 +3,7 @@
 // tests/kernel/no_malloc_config.hpp), on a free-floating box with every element.
 #include <gtest/gtest.h>
 
+#include "hydro/elements/froude_krylov_force.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
 #include "hydro/elements/radiation_convolution.hpp"
@@ -52,6 +53,8 @@ TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
   sea.num_components = 50;
   sea.heading = 0.3;
   sea.ramp = Ramp{RampKind::cosine, 10.0};
+  system.add_force_element(std::make_unique<FroudeKrylovForce>("froude_krylov", link, box_mesh(Vector3(10, 8, 6), Vector3(0, 0, -1), 2),
+                                                               regular_wave(1.0, 7.0, 0.2)));
   auto waves = std::make_unique<WaveExcitation>("waves", link, excitation, irregular_sea(PiersonMoskowitz{2.0, 8.0}, sea));
   const WaveExcitation& wave_element = *waves;
   system.add_force_element(std::move(waves));
