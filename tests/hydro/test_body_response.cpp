@@ -184,6 +184,65 @@ TEST(HydroBodyResponse, H4RegularWaveRaoMatchesFrequencyDomain) {
   RecordProperty("amplitude_error_vs_bem_coefficients", std::to_string(worst_bem_amplitude));
 }
 
+// Irregular waves: three components at BEM periods (9, 12, 15 s; equal-Δω-like
+// amplitudes and random phases) through the same model as H4; after the transient
+// the heave must be the superposition of the three frequency-domain responses.
+TEST(HydroBodyResponse, IrregularWaveResponseIsTheSumOfRaoResponses) {
+  const BemData& bem = semisub();
+  const RadiationData& r = bem.radiation;
+  const ModePairStateSpace memory = realize_kernel_entry(retardation_kernel(r, 60.0, 0.05), 2, 2, 12);
+  const double A33 = r.added_mass_infinite(2, 2), C33 = bem.hydrostatic_stiffness(2, 2);
+  const double wn = std::sqrt(C33 / (mass + A33)), b_visc = 2 * 0.05 * wn * (mass + A33);
+  std::vector<WaveComponent> components;
+  const double periods[] = {9.0, 12.0, 15.0}, amplitudes[] = {0.8, 1.2, 0.6}, phases[] = {0.3, 2.0, 4.4};
+  for (int j = 0; j < 3; ++j) {
+    const double w = 2 * M_PI / periods[j];
+    components.push_back({amplitudes[j], w, w * w / g, 0.0, phases[j]});
+  }
+  const WaveTrain sea(components, Ramp{RampKind::cosine, 100.0});
+  auto model = heaving_semisub(r.added_mass_infinite);
+  const int link = model->link_index("semisub");
+  MultibodySystem system(model);
+  system.add_force_element(hydrostatics(*model));
+  Matrix6 damping = Matrix6::Zero();
+  damping(2, 2) = b_visc;
+  system.add_force_element(std::make_unique<BodyDamping>("viscous", link, damping));
+  system.add_force_element(std::make_unique<RadiationMemory>("radiation", link, std::vector{memory}));
+  system.add_force_element(std::make_unique<WaveExcitation>("excitation", link, bem.excitation, sea));
+  auto integrator = rk4(0.05);
+  integrator->initialize(system, 0.0, system.initial_state(VectorX::Zero(1), VectorX::Zero(1)));
+  std::complex<double> rao[3];
+  for (int j = 0; j < 3; ++j) {
+    const double w = components[j].angular_frequency;
+    const size_t n = std::find_if(r.angular_frequencies.begin(), r.angular_frequencies.end(),
+                                  [&](double x) { return std::abs(x - w) < 1e-12; }) - r.angular_frequencies.begin();
+    ASSERT_LT(n, r.angular_frequencies.size());
+    rao[j] = bem.excitation.force[0][n][2] /
+             (C33 - w * w * (mass + A33) + std::complex<double>(0, w) * (b_visc + frequency_response(memory, w)));
+  }
+  double peak = 0.0, error = 0.0;
+  for (int k = 1; k * 0.05 <= 900.0 + 1e-9; ++k) {
+    const double t = k * 0.05;
+    integrator->advance_to(t);
+    if (t < 700.0) continue;
+    double expected = 0.0;
+    for (int j = 0; j < 3; ++j)
+      expected += (rao[j] * amplitudes[j] * std::polar(1.0, components[j].angular_frequency * t + phases[j])).real();
+    peak = std::max(peak, std::abs(expected));
+    error = std::max(error, std::abs(integrator->state()[0] - expected));
+  }
+  EXPECT_LT(error / peak, 0.01);
+  RecordProperty("superposition_error", fmt_e(error / peak));
+  // The excitation at a mean position x0 down-wave is the excitation at the origin
+  // delayed by the travel time of each component (checked on one component).
+  const WaveTrain single({components[1]});
+  const double x0 = 40.0, c = components[1].angular_frequency / components[1].wave_number;
+  const WaveExcitation at_origin("origin", link, bem.excitation, single);
+  const WaveExcitation down_wave("down", link, bem.excitation, single, Eigen::Vector2d(x0, 0.0));
+  for (double t : {100.0, 103.0, 107.5})
+    EXPECT_NEAR(down_wave.load(t)[2], at_origin.load(t - x0 / c)[2], 1e-6 * std::abs(rao[1]) * C33);
+}
+
 // LinearRestoring and BodyDamping on a free body away from the origin: the
 // displacement, the reference-point velocity (world axes) and the load's moment
 // about the world origin, worked by hand.
