@@ -190,9 +190,6 @@ RadiationData read_wamit_1(const std::string& path, const WamitScaling& s) {
 
 ExcitationData read_wamit_3(const std::string& path, const WamitScaling& s) {
   const std::vector<Row> rows = read_rows(path);
-  struct Entry {
-    int row;
-  };
   std::map<double, std::map<double, std::map<int, int>>> table;  // period -> heading -> mode -> row
   std::map<double, int> first_line_of_period;
   for (size_t r = 0; r < rows.size(); ++r) {

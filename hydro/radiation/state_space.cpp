@@ -70,10 +70,9 @@ ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, 
 }
 
 std::vector<ModePairStateSpace> realize_kernel(const RetardationKernel& kernel, int order, double threshold) {
-  double largest = 0.0;
   Matrix6 peak = Matrix6::Zero();
   for (const Matrix6& K : kernel.values) peak = peak.cwiseMax(K.cwiseAbs());
-  largest = peak.diagonal().maxCoeff();
+  const double largest = peak.diagonal().maxCoeff();
   std::vector<ModePairStateSpace> systems;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)

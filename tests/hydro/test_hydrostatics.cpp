@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 
 #include "hydro/data_error.hpp"
@@ -171,6 +172,33 @@ TEST(HydroHydrostatics, FroudeKrylovMatchesLinearTheoryInSmallWaves) {
     EXPECT_NEAR(surge, -surge_amplitude * std::sin(w * t), 1e-3 * surge_amplitude) << t;
     EXPECT_NEAR(load.force.y(), 0.0, 1e-9 * surge_amplitude);
   }
+}
+
+TEST(HydroHydrostatics, BinaryStlMatchesQuadMesh) {
+  const HullMesh boxes = box_mesh(Vector3(8, 4, 6), Vector3(0, 0, -2), 1);
+  const std::string path = ::testing::TempDir() + "/hydro_box_binary.stl";
+  {
+    std::ofstream out(path, std::ios::binary);
+    const std::string header(80, ' ');
+    out.write(header.data(), 80);
+    const std::uint32_t count = 12;
+    out.write(reinterpret_cast<const char*>(&count), 4);
+    for (const HullPanel& p : boxes.panels)
+      for (int t = 1; t + 1 < p.num_vertices; ++t) {
+        const float normal[3] = {0, 0, 0};
+        out.write(reinterpret_cast<const char*>(normal), 12);
+        for (int k : {0, t, t + 1})
+          for (int c = 0; c < 3; ++c) {
+            const float value = static_cast<float>(p.vertices[k][c]);
+            out.write(reinterpret_cast<const char*>(&value), 4);
+          }
+        const std::uint16_t attributes = 0;
+        out.write(reinterpret_cast<const char*>(&attributes), 2);
+      }
+  }
+  const HullMesh stl = read_stl(path);
+  EXPECT_EQ(stl.panels.size(), 12u);
+  expect_relative(wetted_hull(stl, Transform::Identity(), rho, g).volume, 8 * 4 * 5, 1e-12, "V");
 }
 
 TEST(HydroHydrostatics, BadGdfNamesFileAndLine) {
