@@ -26,6 +26,14 @@ const std::vector<ValidationCheck>& validation_checks() {
              "hanging weights",
        check_c2_static_rig},
       {"C3", "gas-spring energy: integral F ds vs the polytropic work (p V) / (n - 1) change", check_c3_gas_spring_energy},
+      {"H1", "hydrostatics of a box hull by clipping vs analytic V, B, C33, C44, C55", check_h1_box_hydrostatics},
+      {"H2", "hydrostatics of the MSS semi mesh vs WAMIT semisub.out", check_h2_semisub_hydrostatics},
+      {"H3", "heave free decay through the kernel vs 2 pi sqrt((m + A33)/C33) and the damped closed form",
+       check_h3_heave_decay},
+      {"H4", "regular-wave heave RAO from time-domain runs vs the frequency-domain RAO", check_h4_regular_wave_rao},
+      {"H5", "radiation memory: B(w) from K(t), convolution vs state space", check_h5_radiation_memory},
+      {"H6", "irregular sea generation: H_m0 of a 3-hour record vs the target", check_h6_irregular_sea},
+      {"H7", "WAMIT readers vs the MSS semi numbers, WAMIT's RAO file and the Hulme table", check_h7_bem_readers},
   };
   return checks;
 }

@@ -47,5 +47,12 @@ std::vector<ValidationRow> check_l2_four_bar();
 std::vector<ValidationRow> check_c1_passive_compensator();
 std::vector<ValidationRow> check_c2_static_rig();
 std::vector<ValidationRow> check_c3_gas_spring_energy();
+std::vector<ValidationRow> check_h1_box_hydrostatics();
+std::vector<ValidationRow> check_h2_semisub_hydrostatics();
+std::vector<ValidationRow> check_h3_heave_decay();
+std::vector<ValidationRow> check_h4_regular_wave_rao();
+std::vector<ValidationRow> check_h5_radiation_memory();
+std::vector<ValidationRow> check_h6_irregular_sea();
+std::vector<ValidationRow> check_h7_bem_readers();
 
 }  // namespace heavesim::validation

@@ -1,0 +1,56 @@
+#pragma once
+// Linear and quadratic loads on one body's reference point (its body frame origin), in
+// WAMIT order [surge, sway, heave, roll, pitch, yaw], world axes (body_motion.hpp):
+//  * LinearRestoring: F = f0 - K xi, xi the small displacement from the reference pose
+//    (linear hydrostatics with K = C and f0 = rho g V e_z; a linear mooring spring with
+//    K the mooring stiffness and f0 the pretension);
+//  * BodyDamping: F = -B_lin v - diag(b_quad) v .* |v| (viscous hull damping, WEC-Sim's
+//    linearDamping and quadDrag, hydro-reference.md sec. 1.1).
+// Units: K in N/m, N, N m/rad blocks; B_lin in N s/m, N s, N m s/rad; b_quad in
+// N s^2/m^2 (translations) and N m s^2/rad^2 (rotations). No allocation in apply().
+#include "hydro/elements/body_motion.hpp"
+
+namespace heavesim::hydro {
+
+class LinearRestoring : public ForceElement {
+ public:
+  LinearRestoring(std::string name, int link, const Matrix6& stiffness, const Vector6& constant_load,
+                  const Transform& X_world_reference)
+      : name_(std::move(name)), link_(link), stiffness_(stiffness), constant_load_(constant_load),
+        reference_(X_world_reference) {}
+  const std::string& name() const override { return name_; }
+  void apply(double, const Model& model, const Data& data, Eigen::Ref<const VectorX>,
+             AppliedForces& forces) const override {
+    const BodyMotion m = body_motion(model, data, link_);
+    const Vector6 load = constant_load_ - stiffness_ * displacement(m.X_world_body, reference_);
+    add_load(forces, link_, m.X_world_body.translation(), load);
+  }
+
+ private:
+  std::string name_;
+  int link_;
+  Matrix6 stiffness_;
+  Vector6 constant_load_;
+  Transform reference_;
+};
+
+class BodyDamping : public ForceElement {
+ public:
+  BodyDamping(std::string name, int link, const Matrix6& linear, const Vector6& quadratic = Vector6::Zero())
+      : name_(std::move(name)), link_(link), linear_(linear), quadratic_(quadratic) {}
+  const std::string& name() const override { return name_; }
+  void apply(double, const Model& model, const Data& data, Eigen::Ref<const VectorX>,
+             AppliedForces& forces) const override {
+    const BodyMotion m = body_motion(model, data, link_);
+    const Vector6 load = -linear_ * m.velocity - quadratic_.cwiseProduct(m.velocity.cwiseProduct(m.velocity.cwiseAbs()));
+    add_load(forces, link_, m.X_world_body.translation(), load);
+  }
+
+ private:
+  std::string name_;
+  int link_;
+  Matrix6 linear_;
+  Vector6 quadratic_;
+};
+
+}  // namespace heavesim::hydro

@@ -1,0 +1,90 @@
+#include "hydro/radiation/state_space.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <Eigen/Dense>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace heavesim::hydro {
+
+ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, int j, int order, int max_hankel_size) {
+  if (order < 1 || order > max_state_space_order)
+    throw std::invalid_argument("state-space order must be 1.." + std::to_string(max_state_space_order) + "; found " +
+                                std::to_string(order));
+  const int samples = static_cast<int>(kernel.values.size());
+  const int stride = std::max(1, (samples - 1) / (2 * max_hankel_size - 1) + ((samples - 1) % (2 * max_hankel_size - 1) != 0));
+  const double h = stride * kernel.time_step;
+  std::vector<double> y;
+  for (int k = 0; k < samples; k += stride) y.push_back(kernel.values[k](i, j));
+  const int size = std::min<int>(max_hankel_size, (static_cast<int>(y.size()) - 1) / 2);
+  if (size < order) throw std::invalid_argument("kernel too short for a state space of order " + std::to_string(order));
+  Eigen::MatrixXd H0(size, size), H1(size, size);
+  for (int r = 0; r < size; ++r)
+    for (int c = 0; c < size; ++c) {
+      H0(r, c) = y[r + c];
+      H1(r, c) = y[r + c + 1];
+    }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(H0, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::VectorXd sigma = svd.singularValues().head(order);
+  const Eigen::MatrixXd U = svd.matrixU().leftCols(order), V = svd.matrixV().leftCols(order);
+  const Eigen::VectorXd root = sigma.cwiseSqrt(), inverse_root = root.cwiseInverse();
+  // y_k = C A_d^k B with A_d = S^-1/2 U^T H1 V S^-1/2, B = S^1/2 V^T e_1, C = e_1^T U S^1/2.
+  const Eigen::MatrixXd Ad = inverse_root.asDiagonal() * (U.transpose() * H1 * V) * inverse_root.asDiagonal();
+  ModePairStateSpace system;
+  system.force_mode = i;
+  system.velocity_mode = j;
+  system.B = root.asDiagonal() * V.row(0).transpose();
+  system.C = U.row(0) * root.asDiagonal();
+  Eigen::MatrixXd A = Ad.log().real() / h;
+  // A realisation of a truncated kernel can carry a slightly unstable, lightly damped
+  // pole; reflect such poles into the left half-plane (Re lambda -> -|Re lambda|),
+  // which keeps their frequency and the fit of the decaying part.
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(A);
+  Eigen::VectorXcd lambda = eigen.eigenvalues();
+  if ((lambda.real().array() >= 0.0).any()) {
+    for (Eigen::Index k = 0; k < lambda.size(); ++k)
+      lambda[k] = std::complex<double>(-std::max(std::abs(lambda[k].real()), 1e-6), lambda[k].imag());
+    const Eigen::MatrixXcd vectors = eigen.eigenvectors();
+    A = (vectors * lambda.asDiagonal() * vectors.inverse()).real();
+    system.reflected_poles = true;
+  }
+  system.A = A;
+  system.stable = (Eigen::MatrixXd(system.A).eigenvalues().real().array() < 0.0).all();
+  // Fit quality on the full-rate samples.
+  double mean = 0.0;
+  for (const Matrix6& K : kernel.values) mean += K(i, j);
+  mean /= samples;
+  double residual = 0.0, total = 0.0;
+  const Eigen::MatrixXd step = (Eigen::MatrixXd(system.A) * kernel.time_step).exp();
+  Eigen::VectorXd x = system.B;
+  for (int k = 0; k < samples; ++k) {
+    const double fit = system.C * x;
+    residual += std::pow(kernel.values[k](i, j) - fit, 2);
+    total += std::pow(kernel.values[k](i, j) - mean, 2);
+    x = step * x;
+  }
+  system.r_squared = total > 0.0 ? 1.0 - residual / total : 1.0;
+  return system;
+}
+
+std::vector<ModePairStateSpace> realize_kernel(const RetardationKernel& kernel, int order, double threshold) {
+  Matrix6 peak = Matrix6::Zero();
+  for (const Matrix6& K : kernel.values) peak = peak.cwiseMax(K.cwiseAbs());
+  const double largest = peak.diagonal().maxCoeff();
+  std::vector<ModePairStateSpace> systems;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      if (peak(i, j) > threshold * largest) systems.push_back(realize_kernel_entry(kernel, i, j, order));
+  return systems;
+}
+
+std::complex<double> frequency_response(const ModePairStateSpace& s, double w) {
+  const int n = static_cast<int>(s.A.rows());
+  const Eigen::MatrixXcd M = std::complex<double>(0.0, w) * Eigen::MatrixXcd::Identity(n, n) - Eigen::MatrixXd(s.A).cast<std::complex<double>>();
+  const Eigen::VectorXcd x = M.partialPivLu().solve(Eigen::VectorXd(s.B).cast<std::complex<double>>());
+  return (Eigen::RowVectorXd(s.C).cast<std::complex<double>>() * x)(0);
+}
+
+}  // namespace heavesim::hydro

@@ -1,0 +1,43 @@
+#pragma once
+// State-space realisation of the radiation memory, one SISO system per coupled mode
+// pair (i, j):  z' = A z + B v_j,  F_i -= C z,  so that K_ij(t) ~ C e^{A t} B
+// (D = 0 for causality; hydro-reference.md sec. 1.1). Identified from the sampled
+// kernel by the eigensystem realisation algorithm (Kung 1978; Kristiansen et al. 2005;
+// Taghipour et al. 2008): SVD of the Hankel matrix of K(k h), order n kept, then the
+// discrete A_d = e^{A h} taken back to continuous time with the matrix logarithm.
+#include <complex>
+#include <vector>
+
+#include "hydro/radiation/retardation_kernel.hpp"
+
+namespace heavesim::hydro {
+
+inline constexpr int max_state_space_order = 24;
+using StateMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, max_state_space_order, max_state_space_order>;
+using StateVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, max_state_space_order, 1>;
+using StateRowVector = Eigen::Matrix<double, 1, Eigen::Dynamic, 1, 1, max_state_space_order>;
+
+struct ModePairStateSpace {
+  int force_mode = 0;     // i (0-based, WAMIT order)
+  int velocity_mode = 0;  // j
+  StateMatrix A;          // n x n [1/s]
+  StateVector B;          // n
+  StateRowVector C;       // n, units of K
+  double r_squared = 0;   // 1 - sum (K - K_fit)^2 / sum (K - mean K)^2 over the kernel samples
+  bool stable = false;    // every eigenvalue of A has a negative real part
+  bool reflected_poles = false;  // unstable poles of the raw realisation were mirrored
+};
+
+/// Realises one kernel entry K_ij (samples every `time_step` [s]) with `order` states,
+/// using at most `max_hankel_size` rows and columns (the samples are decimated so the
+/// Hankel matrix spans the whole kernel).
+ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, int j, int order,
+                                        int max_hankel_size = 150);
+
+/// All pairs whose kernel is not negligible (max |K_ij| > threshold max_k max |K_kk|).
+std::vector<ModePairStateSpace> realize_kernel(const RetardationKernel& kernel, int order, double threshold = 1e-3);
+
+/// C (i w - A)^-1 B = B_ij(w) + i w (A_ij(w) - A_ij(inf)) of the realisation.
+std::complex<double> frequency_response(const ModePairStateSpace& system, double angular_frequency);
+
+}  // namespace heavesim::hydro

@@ -1,0 +1,82 @@
+#include "hydro/waves/wave_train.hpp"
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+namespace heavesim::hydro {
+
+double WaveTrain::elevation(double t, double x, double y) const {
+  const double r = ramp_(t);
+  if (r == 0.0) return 0.0;
+  double eta = 0.0;
+  for (const WaveComponent& c : components_)
+    eta += c.amplitude * std::cos(c.angular_frequency * t -
+                                  c.wave_number * (x * std::cos(c.heading) + y * std::sin(c.heading)) + c.phase);
+  return r * eta;
+}
+
+double WaveTrain::variance() const {
+  double v = 0.0;
+  for (const WaveComponent& c : components_) v += 0.5 * c.amplitude * c.amplitude;
+  return v;
+}
+
+WaveTrain regular_wave(double height, double period, double heading, double phase, double depth, Ramp ramp,
+                       double gravity) {
+  if (!(height >= 0.0) || !(period > 0.0))
+    throw std::invalid_argument("regular wave: expected height >= 0 m and period > 0 s; found H = " +
+                                std::to_string(height) + " m, T = " + std::to_string(period) + " s");
+  const double w = 2.0 * M_PI / period;
+  return WaveTrain({{0.5 * height, w, wave_number(w, depth, gravity), heading, phase}}, ramp, depth);
+}
+
+WaveTrain irregular_sea(const std::function<double(double)>& spectrum, const IrregularSeaSettings& s) {
+  if (!(s.min_frequency > 0.0) || !(s.max_frequency > s.min_frequency) || s.num_components < 1)
+    throw std::invalid_argument("irregular sea: expected 0 < w_min < w_max and at least one component; found w_min = " +
+                                std::to_string(s.min_frequency) + ", w_max = " + std::to_string(s.max_frequency) +
+                                ", N = " + std::to_string(s.num_components));
+  const int n = s.num_components;
+  std::vector<double> frequencies(n), amplitudes(n);
+  if (s.discretization == FrequencyDiscretization::equal_spacing) {
+    const double dw = (s.max_frequency - s.min_frequency) / n;
+    for (int j = 0; j < n; ++j) {
+      frequencies[j] = s.min_frequency + (j + 0.5) * dw;
+      amplitudes[j] = std::sqrt(2.0 * spectrum(frequencies[j]) * dw);
+    }
+  } else {
+    // Cumulative m0(w) by the trapezoidal rule on a fine grid, then inverted by
+    // linear interpolation at the energy fractions (j + 1/2) / N.
+    const int fine = 200 * n;
+    const double h = (s.max_frequency - s.min_frequency) / fine;
+    std::vector<double> cumulative(fine + 1, 0.0);
+    double previous = spectrum(s.min_frequency);
+    for (int i = 1; i <= fine; ++i) {
+      const double current = spectrum(s.min_frequency + i * h);
+      cumulative[i] = cumulative[i - 1] + 0.5 * h * (previous + current);
+      previous = current;
+    }
+    const double m0 = cumulative.back();
+    if (!(m0 > 0.0)) throw std::invalid_argument("irregular sea: the spectrum holds no energy in [w_min, w_max]");
+    int i = 0;
+    for (int j = 0; j < n; ++j) {
+      const double target = (j + 0.5) / n * m0;
+      while (cumulative[i + 1] < target) ++i;
+      const double fraction = (target - cumulative[i]) / (cumulative[i + 1] - cumulative[i]);
+      frequencies[j] = s.min_frequency + (i + fraction) * h;
+      amplitudes[j] = std::sqrt(2.0 * m0 / n);
+    }
+  }
+  std::mt19937_64 generator(s.seed);
+  std::vector<WaveComponent> components(n);
+  for (int j = 0; j < n; ++j) {
+    // 53 random bits -> [0, 1): the same phases on every standard library.
+    const double u = static_cast<double>(generator() >> 11) * 0x1.0p-53;
+    components[j] = {amplitudes[j], frequencies[j], wave_number(frequencies[j], s.depth, s.gravity), s.heading,
+                     2.0 * M_PI * u};
+  }
+  return WaveTrain(std::move(components), s.ramp, s.depth);
+}
+
+}  // namespace heavesim::hydro

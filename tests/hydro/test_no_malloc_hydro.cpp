@@ -1,0 +1,73 @@
+// No heap allocation in the hydro force elements' apply()/state_derivative()/outputs():
+// compiled into heavesim_no_malloc_tests (EIGEN_RUNTIME_NO_MALLOC, see
+// tests/kernel/no_malloc_config.hpp), on a free-floating box with every element.
+#include <gtest/gtest.h>
+
+#include "hydro/elements/froude_krylov_force.hpp"
+#include "hydro/elements/linear_body_loads.hpp"
+#include "hydro/elements/nonlinear_hydrostatics.hpp"
+#include "hydro/elements/radiation_convolution.hpp"
+#include "hydro/elements/radiation_memory.hpp"
+#include "hydro/elements/wave_excitation.hpp"
+#include "hydro/waves/wave_spectrum.hpp"
+#include "kernel/model/model_builder.hpp"
+#include "kernel/system/multibody_system.hpp"
+
+namespace heavesim::hydro {
+namespace {
+
+TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
+  ModelBuilder builder;
+  Matrix6 added = Matrix6::Identity() * 1e5;
+  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), added});
+  JointDefinition joint;
+  joint.name = "float";
+  joint.kind = JointKind::free;
+  joint.parent = "ground";
+  joint.child = "hull";
+  builder.add_joint(joint);
+  auto model = std::make_shared<const Model>(builder.build());
+  const int link = model->link_index("hull");
+  MultibodySystem system(model);
+  system.add_force_element(std::make_unique<NonlinearHydrostatics>("buoyancy", link, box_mesh(Vector3(10, 8, 6), Vector3(0, 0, -1), 3)));
+  system.add_force_element(std::make_unique<LinearRestoring>("mooring", link, Matrix6::Identity() * 1e4, Vector6::Zero(),
+                                                             Transform::Identity()));
+  Vector6 quadratic = Vector6::Constant(1e3);
+  system.add_force_element(std::make_unique<BodyDamping>("drag", link, Matrix6::Identity() * 1e3, quadratic));
+  ModePairStateSpace heave;
+  heave.force_mode = heave.velocity_mode = 2;
+  heave.A = StateMatrix::Identity(4, 4) * -0.5;
+  heave.B = StateVector::Ones(4);
+  heave.C = StateRowVector::Ones(4) * 1e4;
+  ModePairStateSpace pitch_surge = heave;
+  pitch_surge.force_mode = 4;
+  pitch_surge.velocity_mode = 0;
+  system.add_force_element(std::make_unique<RadiationMemory>("radiation", link, std::vector{heave, pitch_surge}));
+  RetardationKernel kernel{0.1, std::vector<Matrix6>(200, Matrix6::Identity() * 1e3)};
+  system.add_force_element(std::make_unique<RadiationConvolution>("convolution", link, kernel));
+  ExcitationData excitation;
+  excitation.angular_frequencies = {0.3, 0.6, 1.2};
+  excitation.headings = {0.0, M_PI / 2};
+  excitation.force.assign(2, std::vector<ComplexVector6>(3, ComplexVector6::Constant({1e5, 2e4})));
+  IrregularSeaSettings sea;
+  sea.num_components = 50;
+  sea.heading = 0.3;
+  sea.ramp = Ramp{RampKind::cosine, 10.0};
+  system.add_force_element(std::make_unique<FroudeKrylovForce>("froude_krylov", link, box_mesh(Vector3(10, 8, 6), Vector3(0, 0, -1), 2),
+                                                               regular_wave(1.0, 7.0, 0.2)));
+  auto waves = std::make_unique<WaveExcitation>("waves", link, excitation, irregular_sea(PiersonMoskowitz{2.0, 8.0}, sea));
+  const WaveExcitation& wave_element = *waves;
+  system.add_force_element(std::move(waves));
+  VectorX q = model->neutral_configuration(), v = VectorX::Constant(model->nv, 0.1);
+  q[2] = -0.5;
+  VectorX y = system.initial_state(q, v), ydot(system.size());
+  system.derivative(3.0, y, ydot);  // first use may size workspaces
+  std::array<double, 2> values;
+  Eigen::internal::set_is_malloc_allowed(false);
+  EXPECT_NO_THROW(system.derivative(5.0, y, ydot));
+  EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), values));
+  Eigen::internal::set_is_malloc_allowed(true);
+}
+
+}  // namespace
+}  // namespace heavesim::hydro
