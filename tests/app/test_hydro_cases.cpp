@@ -49,7 +49,7 @@ double crossing_period(const std::vector<double>& time, const std::vector<double
 
 TEST(HydroCases, EveryHydroCaseChecks) {
   for (const char* file : {"cases/hydro/heave_decay.yaml", "cases/hydro/regular_wave.yaml",
-                           "cases/hydro/irregular_sea.yaml"}) {
+                           "cases/hydro/irregular_sea.yaml", "cases/hydro/heave_decay_nonlinear.yaml"}) {
     const testing::CommandResult result =
         testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
@@ -125,6 +125,27 @@ TEST(HydroCases, ResultFileCarriesHydroLoadsAndWaveElevation) {
   double largest_heave = 0.0;
   for (double q : heave) largest_heave = std::max(largest_heave, std::abs(q));
   EXPECT_GT(largest_heave, 1e-3);  // the wave moves the platform
+}
+
+TEST(HydroCases, NonlinearHydrostaticsRecordsBuoyancyOfTheClippedMesh) {
+  // The recorded load is the element's own force (F_z = rho g V of the wetted hull at
+  // that instant); at +1 m heave the volume is about V0 - A_wp * 1 m, with V0 = 50 709 m^3
+  // and A_wp = 973.14 m^2 from semisub.out (the mesh is within 0.5 % of both, H2).
+  const std::string output = temporary("hydro_nonlinear.h5");
+  const testing::CommandResult result = run("cases/hydro/heave_decay_nonlinear.yaml", output,
+                                            "--set solver.t_end=0.5 --set output.interval=0.05");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  const std::vector<double> volume = file.read("/forces/hydrostatics/displaced_volume"),
+                            force_z = file.read("/forces/hydrostatics/force_z"),
+                            moment_x = file.read("/forces/hydrostatics/moment_x");
+  ASSERT_FALSE(volume.empty());
+  EXPECT_NEAR(volume.front() / (50709.0 - 973.14), 1.0, 0.01);
+  for (std::size_t k = 0; k < volume.size(); ++k) {
+    EXPECT_NEAR(force_z[k], rho * g * volume[k], 1e-9 * rho * g * volume[k]);
+    EXPECT_LT(std::abs(moment_x[k]), 1e-6 * rho * g * volume[k]);  // port-starboard symmetric hull
+  }
 }
 
 }  // namespace
