@@ -8,7 +8,7 @@ frequency-domain RAO computed here from the WAMIT files directly:
 
     X3/a = X3_bar rho g / (C33 - w^2 (m + A33(w)) + i w (B33(w) + b_visc))
 
-with A33, B33 from semisub.1, X3 from semisub.3 at the case's heading (180 deg), C33
+with A33, B33 from semisub.1, X3 from semisub.3 (all linear in w between the BEM points) at the case's heading (180 deg), C33
 from semisub.hst, m from semisub.frc and b_visc the case's linear heave damping.
 Usage: scripts/rao_sweep.py [--periods 6 8 10 ...] [-o results/rao]
 """
@@ -42,15 +42,16 @@ def frequency_domain_rao(periods, heading_deg=180.0):
                        if len(r) == 5 and r[1] == 3 and r[2] == 3 and r[0] > 0)
     excitation = sorted((r[0], r[5], r[6]) for r in rows(os.path.join(DATA, "semisub.3"))
                         if len(r) == 7 and r[2] == 3 and abs(r[1] - heading_deg) < 1e-6)
-    per_r = np.array([r[0] for r in radiation])
-    per_x = np.array([x[0] for x in excitation])
+    # Linear in w (as hydro/ interpolates X and B), on Re and Im of X separately.
+    w_r = 2 * np.pi / np.array([r[0] for r in radiation])[::-1]
+    w_x = 2 * np.pi / np.array([x[0] for x in excitation])[::-1]
     result = []
     for T in periods:
         w = 2 * np.pi / T
-        a33 = RHO * np.interp(T, per_r, [r[1] for r in radiation])
-        b33 = RHO * w * np.interp(T, per_r, [r[2] for r in radiation])
-        x3 = RHO * G * (np.interp(T, per_x, [x[1] for x in excitation]) +
-                        1j * np.interp(T, per_x, [x[2] for x in excitation]))
+        a33 = RHO * np.interp(w, w_r, [r[1] for r in radiation][::-1])
+        b33 = RHO * w * np.interp(w, w_r, [r[2] for r in radiation][::-1])
+        x3 = RHO * G * (np.interp(w, w_x, [x[1] for x in excitation][::-1]) +
+                        1j * np.interp(w, w_x, [x[2] for x in excitation][::-1]))
         result.append(x3 / (c33 - w * w * (MASS + a33) + 1j * w * (b33 + B_VISC)))
     return np.array(result)
 
