@@ -202,6 +202,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     fields[def.file_key] = item[def.file_key].location();
   }
   if (auto scale = item.optional("length_scale")) def.length_scale = scale->positive_number();
+  for (const char* key : {"state_space_order", "modes"})
+    if (item.has(key)) fields[key] = item[key].location();
   definition.force_paths[name] = item.path();
   definition.force_field_locations[name] = fields;
   definition.hydro_forces.push_back(std::move(def));

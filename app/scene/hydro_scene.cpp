@@ -137,6 +137,13 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
             if (force.modes[i] && force.modes[j] && largest(i, j) > 0.0 &&
                 largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
               systems.push_back(hydro::realize_kernel_entry(kernel, i, j, force.state_space_order));
+        for (const hydro::ModePairStateSpace& realised : systems)
+          if (!realised.stable)  // an unstable memory would grow without bound in the run
+            throw hydro_error(definition, force.name, "state_space_order",
+                              fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
+                                          realised.force_mode + 1, realised.velocity_mode + 1,
+                                          force.state_space_order, realised.r_squared),
+                              "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
         element = std::make_unique<hydro::RadiationMemory>(force.name, link, std::move(systems));
         break;
       }
