@@ -148,5 +148,29 @@ TEST(HydroCases, NonlinearHydrostaticsRecordsBuoyancyOfTheClippedMesh) {
   }
 }
 
+TEST(HydroCases, MooringAndDampingGiveTheDampedOscillator) {
+  // m x'' + b x' + k x = 0, x(0) = 1, x'(0) = 0: x = e^{-zeta w t} (cos w_d t + zeta/sqrt(1-zeta^2) sin w_d t);
+  // the recorded loads are -k x (mooring) and -b x' (damping), world x.
+  const double m = 1.0e6, k = 4.0e5, b = 8.0e4, w = std::sqrt(k / m), zeta = b / (2 * std::sqrt(k * m)),
+               wd = w * std::sqrt(1 - zeta * zeta);
+  const std::string output = temporary("hydro_moored.h5");
+  const testing::CommandResult result = run("tests/cases/moored_surge.yaml", output);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  const std::vector<double> time = file.read("/time"), x = file.read("/joints/surge/q"),
+                            xd = file.read("/joints/surge/qd"), mooring = file.read("/forces/mooring/force_x"),
+                            damping = file.read("/forces/hull_damping/force_x"), drag = file.read("/forces/drag/force_x");
+  double motion_error = 0.0, load_error = 0.0;
+  for (std::size_t n = 0; n < time.size(); ++n) {
+    const double t = time[n];
+    const double exact = std::exp(-zeta * w * t) * (std::cos(wd * t) + zeta / std::sqrt(1 - zeta * zeta) * std::sin(wd * t));
+    motion_error = std::max(motion_error, std::abs(x[n] - exact));
+    load_error = std::max({load_error, std::abs(mooring[n] + k * x[n]), std::abs(damping[n] + b * xd[n]), std::abs(drag[n])});
+  }
+  EXPECT_LT(motion_error, 1e-6);
+  EXPECT_LT(load_error, 1e-6 * k);
+}
+
 }  // namespace
 }  // namespace heavesim
