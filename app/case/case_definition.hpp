@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/case/control_definition.hpp"
+#include "app/case/hydro_definition.hpp"
 #include "app/case/input_error.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/elements/spring_damper.hpp"
@@ -47,7 +48,7 @@ struct OutputSettings {
   bool joints = true;      // /joints/<name>/q, qd, qdd
   bool reactions = true;   // /joints/<name>/reaction_force, reaction_moment (+ joint axes)
   bool energy = true;      // /signals/kinetic_energy, potential_energy, total_energy
-  bool forces = true;      // /forces/<element>/<channel>: force-element outputs (compensators)
+  bool forces = true;      // /forces/<element>/<channel>: force-element outputs (compensators, hydro)
   /// s: start of the window the summary statistics (compensation efficiency) are taken
   /// over, after transients and wave ramps; default the middle of the record.
   double evaluate_after = 0.0;
@@ -68,6 +69,9 @@ struct CaseDefinition {
   std::vector<DriverDefinition> drivers;
   std::vector<ForceDefinition> forces;
   std::vector<CompensatorDefinition> compensators;  // from forces: (control_reader.cpp)
+  std::vector<HydroForceDefinition> hydro_forces;   // from forces: (hydro_reader.cpp)
+  WaterDefinition water;                            // environment.water_density, water_depth
+  WaveDefinition waves;                             // waves: (none unless declared)
   std::map<std::string, JointInitialState> initial_states;  // by joint name
   SolverSettings solver;
   OutputSettings output;

@@ -8,6 +8,7 @@
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
 #include "app/case/control_reader.hpp"
+#include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"
 #include "kernel/spatial/rotation.hpp"
@@ -418,7 +419,13 @@ void check_driver_derivatives(const CaseDefinition& definition, const Expression
 void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& item : section.items()) {
     const std::string type =
-        item["type"].choice({"spring_damper", "point_force", "pneumatic_compensator", "active_compensator"});
+        item["type"].choice({"spring_damper", "point_force", "pneumatic_compensator", "active_compensator",
+                             "hydrostatics", "radiation", "wave_excitation", "linear_damping", "quadratic_damping",
+                             "mooring"});
+    if (is_hydro_force_type(type)) {
+      read_hydro_force(item, type, read_unique_name(item, names), definition);
+      continue;
+    }
     if (is_compensator_type(type)) {
       read_compensator(item, type, read_unique_name(item, names), definition);
       continue;
@@ -563,16 +570,22 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   definition.resolved_yaml = to_yaml_text(tree);
   ExpressionContext expressions;
   const NodeReader root(tree, "", expressions);
-  root.expect_map({"name", "description", "parameters", "environment", "bodies", "joints", "loop_joints",
+  root.expect_map({"name", "description", "parameters", "environment", "waves", "bodies", "joints", "loop_joints",
                    "constraints", "drivers", "forces", "solver", "output"});
 
   definition.name = root.optional("name") ? root["name"].text() : std::filesystem::path(path).stem().string();
   if (auto description = root.optional("description")) definition.description = description->text();
   read_parameters(root.optional("parameters"), expressions);
   if (auto environment = root.optional("environment")) {
-    environment->expect_map({"gravity"});
+    environment->expect_map({"gravity", "water_density", "water_depth"});
     if (auto gravity = environment->optional("gravity")) definition.gravity = gravity->vector3();
+    if (auto density = environment->optional("water_density")) definition.water.density = density->positive_number();
+    if (auto depth = environment->optional("water_depth")) {
+      if (!(depth->node().is_scalar() && depth->node().scalar == "infinite"))
+        definition.water.depth = depth->positive_number();
+    }
   }
+  if (auto waves = root.optional("waves")) read_waves(*waves, definition);
   read_bodies(root["bodies"], definition);
   std::set<std::string> names;  // joints, loop joints, constraints and forces share one name space
   read_joints(root["joints"], definition, names);

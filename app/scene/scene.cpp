@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/scene/control_scene.hpp"
+#include "app/scene/hydro_scene.hpp"
 
 #include "kernel/elements/point_force.hpp"
 #include "kernel/elements/spring_damper.hpp"
@@ -75,9 +76,15 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
 }  // namespace
 
 Scene build_scene(const CaseDefinition& definition) {
+  // Hydro data first: A(inf) of a radiation element is its body's added inertia.
+  const HydroData hydro_data = read_hydro_data(definition);
   ModelBuilder builder;
   builder.set_gravity(definition.gravity);
-  for (const BodyDefinition& body : definition.bodies) builder.add_body(body);
+  for (BodyDefinition body : definition.bodies) {
+    if (auto it = hydro_data.added_inertia.find(body.name); it != hydro_data.added_inertia.end())
+      body.added_inertia = body.added_inertia ? Matrix6(*body.added_inertia + it->second) : it->second;
+    builder.add_body(body);
+  }
   for (const JointDefinition& joint : definition.joints) builder.add_joint(joint);
   for (const LoopJointDefinition& joint : definition.loop_joints) builder.add_loop_joint(joint);
   for (const DistanceConstraintDefinition& constraint : definition.distance_constraints)
@@ -97,6 +104,7 @@ Scene build_scene(const CaseDefinition& definition) {
   settings.projection_tolerance = definition.solver.integrator.constraint_tolerance;
   scene.system = std::make_unique<MultibodySystem>(scene.model, settings);
   add_force_elements(definition, model, *scene.system);
+  add_hydro_elements(definition, hydro_data, model, *scene.system);
 
   VectorX q0 = model.neutral_configuration();
   VectorX v0 = VectorX::Zero(model.nv);

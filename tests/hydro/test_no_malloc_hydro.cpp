@@ -3,6 +3,7 @@
 // tests/kernel/no_malloc_config.hpp), on a free-floating box with every element.
 #include <gtest/gtest.h>
 
+#include "app/scene/recorded_load.hpp"
 #include "hydro/elements/froude_krylov_force.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
@@ -67,6 +68,51 @@ TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
   EXPECT_NO_THROW(system.derivative(5.0, y, ydot));
   EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), values));
   Eigen::internal::set_is_malloc_allowed(true);
+}
+
+TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
+  // The application's recording wrapper (app/scene/recorded_load.hpp) around a linear
+  // restoring and a wave-excitation element: outputs() runs the wrapped apply() into its
+  // own scratch forces.
+  ModelBuilder builder;
+  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), std::nullopt});
+  JointDefinition joint;
+  joint.name = "float";
+  joint.kind = JointKind::free;
+  joint.parent = "ground";
+  joint.child = "hull";
+  builder.add_joint(joint);
+  auto model = std::make_shared<const Model>(builder.build());
+  const int link = model->link_index("hull");
+  MultibodySystem system(model);
+  ExcitationData excitation;
+  excitation.angular_frequencies = {0.3, 0.6, 1.2};
+  excitation.headings = {0.0, M_PI / 2};
+  excitation.force.assign(2, std::vector<ComplexVector6>(3, ComplexVector6::Constant({1e5, 2e4})));
+  auto sea = std::make_shared<const WaveTrain>(regular_wave(1.0, 7.0, 0.2));
+  auto restoring = std::make_unique<RecordedLoad>(
+      std::make_unique<LinearRestoring>("restoring", link, Matrix6::Identity() * 1e4, Vector6::Zero(), Transform::Identity()),
+      *model, link, nullptr);
+  auto waves = std::make_unique<RecordedLoad>(std::make_unique<WaveExcitation>("waves", link, excitation, *sea), *model,
+                                              link, sea);
+  const RecordedLoad& restoring_element = *restoring;
+  const RecordedLoad& wave_element = *waves;
+  ASSERT_EQ(restoring_element.channels().size(), 6u);
+  ASSERT_EQ(wave_element.channels().size(), 2u + 6u + 1u);
+  system.add_force_element(std::move(restoring));
+  system.add_force_element(std::move(waves));
+  VectorX q = model->neutral_configuration(), v = VectorX::Constant(model->nv, 0.1);
+  q[2] = -0.5;
+  VectorX y = system.initial_state(q, v), ydot(system.size());
+  system.derivative(3.0, y, ydot);
+  std::array<double, 6> restoring_values;
+  std::array<double, 9> wave_values;
+  Eigen::internal::set_is_malloc_allowed(false);
+  EXPECT_NO_THROW(system.derivative(5.0, y, ydot));
+  EXPECT_NO_THROW(restoring_element.outputs(5.0, *model, system.data(), VectorX(), restoring_values));
+  EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), wave_values));
+  Eigen::internal::set_is_malloc_allowed(true);
+  EXPECT_NEAR(restoring_values[2], 1e4 * 0.5, 1e-6);  // F_z = -K xi_z, xi_z = -0.5 m
 }
 
 }  // namespace

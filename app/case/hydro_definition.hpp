@@ -1,0 +1,68 @@
+#pragma once
+// The sea and the hydrodynamic force elements of a case (docs/case-format.md,
+// "environment", "waves", "Hydrodynamic forces"), as read from the case: plain values
+// and resolved file paths. The BEM and mesh files are read when the scene is built
+// (app/scene/hydro_scene.cpp), so that only declared elements cost anything.
+#include <array>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "hydro/elements/body_motion.hpp"
+#include "hydro/waves/ramp.hpp"
+#include "hydro/waves/wave_train.hpp"
+
+namespace heavesim {
+
+/// Water properties (environment.water_density, environment.water_depth).
+struct WaterDefinition {
+  double density = 1025.0;                                 // rho [kg/m^3]
+  double depth = std::numeric_limits<double>::infinity();  // h [m]; infinite by default
+};
+
+/// The incident sea (`waves:`); none when the case declares no waves.
+struct WaveDefinition {
+  enum class Type { none, regular, jonswap, pierson_moskowitz };
+  Type type = Type::none;
+  double heading = 0.0;  // beta [rad], direction of travel from +x toward +y (0: head seas along +x)
+  hydro::Ramp ramp;      // start-up ramp on elevation and excitation
+  // regular
+  double amplitude = 0.0;  // a [m]
+  double period = 0.0;     // T [s]
+  double phase = 0.0;      // phi [rad]
+  // irregular
+  double significant_height = 0.0;  // Hs [m]
+  double peak_period = 0.0;         // Tp [s]
+  double peak_enhancement = 3.3;    // gamma [-] (JONSWAP)
+  hydro::IrregularSeaSettings irregular;  // components, band, seed, discretization
+  bool declared() const { return type != Type::none; }
+};
+
+/// One hydrodynamic force element in `forces:` on one body's reference point (its body
+/// frame origin, WAMIT order [surge, sway, heave, roll, pitch, yaw], world axes).
+struct HydroForceDefinition {
+  enum class Type { hydrostatics, radiation, wave_excitation, linear_damping, quadratic_damping, mooring };
+  std::string name;
+  Type type = Type::hydrostatics;
+  std::string body;
+  std::string file;          // hst / .1 / .3 / mesh path, resolved against the case file's directory
+  std::string file_key;      // the key the file came from ("hst", "mesh", "file"), for errors
+  bool nonlinear = false;    // hydrostatics from a panel mesh (.gdf, .stl), clipped every evaluation
+  double length_scale = 1.0;  // WAMIT ULEN [m]
+  /// Linear hydrostatics: buoyancy rho g V at the reference pose; when absent, equal to the
+  /// body's weight (the reference pose is then the static equilibrium).
+  std::optional<double> displaced_volume;  // V [m^3]
+  // radiation
+  int state_space_order = 12;     // states per realised mode pair
+  double kernel_duration = 60.0;  // s, length of the retardation kernel K(t)
+  double kernel_step = 0.05;      // s, its sample step
+  /// WAMIT modes (0-based) whose memory is realised: pairs (i, j) with both in the set.
+  /// All six by default; a body held to fewer degrees of freedom needs only those.
+  std::array<bool, 6> modes = {true, true, true, true, true, true};
+  // linear_damping: B [N s/m ...]; mooring: K [N/m ...]; WAMIT order, world axes
+  hydro::Matrix6 matrix = hydro::Matrix6::Zero();
+  // quadratic_damping: b_quad [N s^2/m^2, N m s^2/rad^2]; mooring: pretension f0 [N, N m]
+  hydro::Vector6 vector = hydro::Vector6::Zero();
+};
+
+}  // namespace heavesim

@@ -1,0 +1,212 @@
+#include "app/case/hydro_reader.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace heavesim {
+namespace {
+
+hydro::Ramp read_ramp(const NodeReader& reader) {
+  // ramp: a duration [s] (cosine ramp), or {kind: cosine | tanh | none, duration: ..}
+  hydro::Ramp ramp;
+  if (reader.node().is_scalar()) {
+    ramp.kind = hydro::RampKind::cosine;
+    ramp.duration = reader.non_negative_number();
+    return ramp;
+  }
+  reader.expect_map({"kind", "duration"});
+  const std::string kind = reader["kind"].choice({"cosine", "tanh", "none"});
+  ramp.kind = kind == "cosine" ? hydro::RampKind::cosine
+              : kind == "tanh" ? hydro::RampKind::hyperbolic_tangent
+                               : hydro::RampKind::none;
+  if (ramp.kind != hydro::RampKind::none) ramp.duration = reader["duration"].positive_number();
+  return ramp;
+}
+
+/// A 6 x 6 matrix in WAMIT order: 6 rows of 6 numbers, or 6 numbers (its diagonal).
+hydro::Matrix6 read_matrix6(const NodeReader& reader) {
+  const char* expected = "6 rows of 6 numbers, or 6 numbers (the diagonal), WAMIT order [surge, sway, heave, roll, "
+                         "pitch, yaw]";
+  if (!reader.node().is_sequence()) reader.fail(expected);
+  const std::vector<NodeReader> items = reader.items();
+  if (items.size() != 6) reader.fail(fmt::format("{} entries", items.size()), expected);
+  hydro::Matrix6 matrix = hydro::Matrix6::Zero();
+  if (items[0].node().is_scalar()) {
+    for (int i = 0; i < 6; ++i) matrix(i, i) = items[i].number();
+    return matrix;
+  }
+  for (int i = 0; i < 6; ++i) {
+    const std::vector<double> row = items[i].node().is_sequence() ? items[i].numbers() : std::vector<double>{};
+    if (row.size() != 6) items[i].fail("a row of 6 numbers");
+    for (int j = 0; j < 6; ++j) matrix(i, j) = row[j];
+  }
+  return matrix;
+}
+
+hydro::Vector6 read_vector6(const NodeReader& reader) {
+  const std::vector<double> values = reader.node().is_sequence() ? reader.numbers() : std::vector<double>{};
+  if (values.size() != 6) reader.fail("6 numbers in WAMIT order [surge, sway, heave, roll, pitch, yaw]");
+  return Eigen::Map<const hydro::Vector6>(values.data());
+}
+
+/// A data file next to the case: relative paths are taken from the directory of the file
+/// that holds the key (an included file's own directory); the file must exist.
+std::string read_data_file(const NodeReader& reader) {
+  const std::string text = reader.text();
+  std::filesystem::path path(text);
+  if (path.is_relative()) path = std::filesystem::path(reader.location().file).parent_path() / path;
+  if (!std::filesystem::is_regular_file(path))
+    reader.fail(fmt::format("'{}', which is not a readable file ({})", text, path.string()),
+                "a path to an existing data file, relative to the case file");
+  return path.lexically_normal().string();
+}
+
+void check_symmetric_positive(const NodeReader& reader, const hydro::Matrix6& matrix, const std::string& what) {
+  if (!matrix.isApprox(matrix.transpose(), 1e-9) && !matrix.isZero())
+    reader.fail("a matrix that is not symmetric", "a symmetric " + what + " matrix");
+  if ((matrix.diagonal().array() < 0.0).any())
+    reader.fail("a negative diagonal entry", "a " + what + " matrix with diagonal entries >= 0");
+}
+
+}  // namespace
+
+bool is_hydro_force_type(const std::string& type) {
+  return type == "hydrostatics" || type == "radiation" || type == "wave_excitation" || type == "linear_damping" ||
+         type == "quadratic_damping" || type == "mooring";
+}
+
+void read_waves(const NodeReader& reader, CaseDefinition& definition) {
+  WaveDefinition& waves = definition.waves;
+  const std::string type = reader["type"].choice({"regular", "jonswap", "pierson_moskowitz", "none"});
+  if (type == "none") {
+    reader.expect_map({"type"});
+    return;
+  }
+  if (type == "regular") {
+    reader.expect_map({"type", "amplitude", "period", "heading", "phase", "ramp"});
+    waves.type = WaveDefinition::Type::regular;
+    waves.amplitude = reader["amplitude"].non_negative_number();
+    waves.period = reader["period"].positive_number();
+    waves.phase = reader.number_or("phase", 0.0);
+  } else {
+    reader.expect_map({"type", "hs", "tp", "gamma", "components", "seed", "discretization", "min_frequency",
+                       "max_frequency", "heading", "ramp"});
+    waves.type = type == "jonswap" ? WaveDefinition::Type::jonswap : WaveDefinition::Type::pierson_moskowitz;
+    waves.significant_height = reader["hs"].positive_number();
+    waves.peak_period = reader["tp"].positive_number();
+    if (auto gamma = reader.optional("gamma")) {
+      if (waves.type != WaveDefinition::Type::jonswap)
+        gamma->fail("'gamma' on a Pierson-Moskowitz sea", "no 'gamma' (type: jonswap has a peak enhancement)");
+      waves.peak_enhancement = gamma->number();
+      if (!(waves.peak_enhancement >= 1.0 && waves.peak_enhancement <= 10.0))
+        gamma->fail(fmt::format("{:g}", waves.peak_enhancement), "a peak enhancement 1 <= gamma <= 10");
+    }
+    hydro::IrregularSeaSettings& sea = waves.irregular;
+    sea.num_components = 200;
+    if (auto components = reader.optional("components")) {
+      const long n = components->integer();
+      if (n < 1 || n > 100000) components->fail(fmt::format("{}", n), "a number of components in 1 .. 100000");
+      sea.num_components = static_cast<int>(n);
+    }
+    if (auto seed = reader.optional("seed")) {
+      const long s = seed->integer();
+      if (s < 0) seed->fail(fmt::format("{}", s), "a seed >= 0");
+      sea.seed = static_cast<unsigned long long>(s);
+    }
+    if (auto discretization = reader.optional("discretization"))
+      sea.discretization = discretization->choice({"equal_energy", "equal_spacing"}) == "equal_energy"
+                               ? hydro::FrequencyDiscretization::equal_energy
+                               : hydro::FrequencyDiscretization::equal_spacing;
+    sea.min_frequency = reader.optional("min_frequency") ? reader["min_frequency"].positive_number() : 0.1;
+    sea.max_frequency = reader.optional("max_frequency") ? reader["max_frequency"].positive_number() : 3.0;
+    if (!(sea.max_frequency > sea.min_frequency))
+      reader["max_frequency"].fail(fmt::format("{:g} rad/s, not above min_frequency = {:g} rad/s", sea.max_frequency,
+                                               sea.min_frequency),
+                                   "max_frequency > min_frequency");
+  }
+  waves.heading = reader.number_or("heading", 0.0);
+  if (auto ramp = reader.optional("ramp")) waves.ramp = read_ramp(*ramp);
+}
+
+void read_hydro_force(const NodeReader& item, const std::string& type, const std::string& name,
+                      CaseDefinition& definition) {
+  HydroForceDefinition def;
+  def.name = name;
+  std::map<std::string, SourceLocation> fields{{"name", item["name"].location()}};
+  if (type == "hydrostatics") {
+    item.expect_map({"name", "type", "body", "hst", "mesh", "displaced_volume", "length_scale", "description"});
+    def.type = HydroForceDefinition::Type::hydrostatics;
+    if (item.has("hst") == item.has("mesh"))
+      item.fail("exactly one of 'hst' (linear, a WAMIT .hst file) and 'mesh' (nonlinear, a .gdf or .stl hull)");
+    def.file_key = item.has("hst") ? "hst" : "mesh";
+    def.nonlinear = def.file_key == "mesh";
+    if (auto volume = item.optional("displaced_volume")) {
+      if (def.nonlinear)
+        volume->fail("'displaced_volume' with a mesh", "no 'displaced_volume' (the mesh gives the volume)");
+      def.displaced_volume = volume->positive_number();
+    }
+  } else if (type == "radiation") {
+    item.expect_map({"name", "type", "body", "file", "state_space_order", "kernel_duration", "kernel_step",
+                     "modes", "length_scale", "description"});
+    def.type = HydroForceDefinition::Type::radiation;
+    def.file_key = "file";
+    if (auto order = item.optional("state_space_order")) {
+      const long n = order->integer();
+      if (n < 2 || n > 40) order->fail(fmt::format("{}", n), "a state-space order in 2 .. 40");
+      def.state_space_order = static_cast<int>(n);
+    }
+    if (auto duration = item.optional("kernel_duration")) def.kernel_duration = duration->positive_number();
+    if (auto step = item.optional("kernel_step")) {
+      def.kernel_step = step->positive_number();
+      if (def.kernel_step * 10 > def.kernel_duration)
+        step->fail(fmt::format("a step of {:g} s for a kernel of {:g} s", def.kernel_step, def.kernel_duration),
+                   "kernel_step <= kernel_duration / 10");
+    }
+    if (auto modes = item.optional("modes")) {
+      def.modes.fill(false);
+      for (const NodeReader& mode : modes->items()) {
+        const long m = mode.integer();
+        if (m < 1 || m > 6) mode.fail(fmt::format("{}", m), "a WAMIT mode 1..6 (surge, sway, heave, roll, pitch, yaw)");
+        def.modes[m - 1] = true;
+      }
+    }
+  } else if (type == "wave_excitation") {
+    item.expect_map({"name", "type", "body", "file", "length_scale", "description"});
+    def.type = HydroForceDefinition::Type::wave_excitation;
+    def.file_key = "file";
+    if (!definition.waves.declared())
+      item["type"].fail("wave_excitation without a sea", "a top-level 'waves:' block (declared before use)");
+  } else if (type == "linear_damping") {
+    item.expect_map({"name", "type", "body", "damping", "description"});
+    def.type = HydroForceDefinition::Type::linear_damping;
+    def.matrix = read_matrix6(item["damping"]);
+    check_symmetric_positive(item["damping"], def.matrix, "damping");
+  } else if (type == "quadratic_damping") {
+    item.expect_map({"name", "type", "body", "coefficients", "description"});
+    def.type = HydroForceDefinition::Type::quadratic_damping;
+    def.vector = read_vector6(item["coefficients"]);
+    if ((def.vector.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+  } else {
+    item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
+    def.type = HydroForceDefinition::Type::mooring;
+    def.matrix = read_matrix6(item["stiffness"]);
+    check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
+    if (auto pretension = item.optional("pretension")) def.vector = read_vector6(*pretension);
+  }
+  def.body = item["body"].text();
+  fields["body"] = item["body"].location();
+  if (!def.file_key.empty()) {
+    def.file = read_data_file(item[def.file_key]);
+    fields[def.file_key] = item[def.file_key].location();
+  }
+  if (auto scale = item.optional("length_scale")) def.length_scale = scale->positive_number();
+  for (const char* key : {"state_space_order", "modes"})
+    if (item.has(key)) fields[key] = item[key].location();
+  definition.force_paths[name] = item.path();
+  definition.force_field_locations[name] = fields;
+  definition.hydro_forces.push_back(std::move(def));
+}
+
+}  // namespace heavesim

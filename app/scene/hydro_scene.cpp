@@ -1,0 +1,169 @@
+#include "app/scene/hydro_scene.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include <fmt/format.h>
+
+#include "app/scene/recorded_load.hpp"
+#include "hydro/bem/wamit_reader.hpp"
+#include "hydro/elements/linear_body_loads.hpp"
+#include "hydro/elements/nonlinear_hydrostatics.hpp"
+#include "hydro/elements/radiation_memory.hpp"
+#include "hydro/elements/wave_excitation.hpp"
+#include "hydro/radiation/added_mass.hpp"
+#include "hydro/radiation/retardation_kernel.hpp"
+#include "hydro/radiation/state_space.hpp"
+#include "hydro/waves/wave_spectrum.hpp"
+
+namespace heavesim {
+namespace {
+
+InputError hydro_error(const CaseDefinition& definition, const std::string& name, const std::string& field,
+                       const std::string& found, const std::string& expected) {
+  const auto& fields = definition.force_field_locations.at(name);
+  auto it = fields.find(field);
+  const SourceLocation location = it != fields.end() ? it->second : fields.at("name");
+  return InputError(location, definition.force_paths.at(name) + "." + field, found, expected);
+}
+
+/// Reads one data file; a DataError points at the case key and names the data file's line.
+template <class Read>
+auto read_checked(const CaseDefinition& definition, const HydroForceDefinition& force, Read read) {
+  try {
+    return read();
+  } catch (const hydro::DataError& error) {
+    const std::string where = error.line() > 0 ? fmt::format("{}:{}", error.file(), error.line()) : error.file();
+    throw hydro_error(definition, force.name, force.file_key, error.found() + " (in " + where + ")",
+                      error.expected());
+  }
+}
+
+hydro::WamitScaling scaling(const CaseDefinition& definition, const HydroForceDefinition& force) {
+  return {definition.water.density, definition.gravity.norm(), force.length_scale};
+}
+
+double body_mass(const CaseDefinition& definition, const std::string& body) {
+  for (const BodyDefinition& b : definition.bodies)
+    if (b.name == body) return b.inertia.mass();
+  return 0.0;
+}
+
+}  // namespace
+
+HydroData read_hydro_data(const CaseDefinition& definition) {
+  HydroData data;
+  for (const HydroForceDefinition& force : definition.hydro_forces) {
+    const hydro::WamitScaling s = scaling(definition, force);
+    using Type = HydroForceDefinition::Type;
+    if (force.type == Type::radiation) {
+      if (data.added_inertia.count(force.body))
+        throw hydro_error(definition, force.name, "body", "a second radiation element on '" + force.body + "'",
+                          "one radiation element per body (its A(inf) is the body's added inertia)");
+      const auto& radiation = data.radiation[force.name] =
+          read_checked(definition, force, [&] { return hydro::read_wamit_1(force.file, s); });
+      data.added_inertia[force.body] = hydro::added_inertia_in_body_frame(radiation.added_mass_infinite);
+    } else if (force.type == Type::wave_excitation) {
+      data.excitation[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_3(force.file, s); });
+    } else if (force.type == Type::hydrostatics && !force.nonlinear) {
+      data.stiffness[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_hst(force.file, s); });
+    } else if (force.type == Type::hydrostatics) {
+      const bool stl = force.file.size() > 4 && (force.file.substr(force.file.size() - 4) == ".stl" ||
+                                                 force.file.substr(force.file.size() - 4) == ".STL");
+      data.meshes[force.name] =
+          read_checked(definition, force, [&] { return stl ? hydro::read_stl(force.file) : hydro::read_gdf(force.file); });
+    }
+  }
+  return data;
+}
+
+hydro::WaveTrain wave_train(const CaseDefinition& definition) {
+  const WaveDefinition& waves = definition.waves;
+  const double g = definition.gravity.norm();
+  if (waves.type == WaveDefinition::Type::regular)
+    return hydro::regular_wave(2.0 * waves.amplitude, waves.period, waves.heading, waves.phase, definition.water.depth,
+                               waves.ramp, g);
+  if (!waves.declared()) return {};
+  hydro::IrregularSeaSettings settings = waves.irregular;
+  settings.heading = waves.heading;
+  settings.depth = definition.water.depth;
+  settings.gravity = g;
+  settings.ramp = waves.ramp;
+  if (waves.type == WaveDefinition::Type::jonswap)
+    return hydro::irregular_sea(hydro::Jonswap(waves.significant_height, waves.peak_period, waves.peak_enhancement),
+                                settings);
+  return hydro::irregular_sea(hydro::PiersonMoskowitz{waves.significant_height, waves.peak_period}, settings);
+}
+
+void add_hydro_elements(const CaseDefinition& definition, const HydroData& data, const Model& model,
+                        MultibodySystem& system) {
+  if (definition.hydro_forces.empty()) return;
+  // One sea per scene, shared by the elements that record it.
+  auto waves = std::make_shared<const hydro::WaveTrain>(wave_train(definition));
+  const double g = definition.gravity.norm(), rho = definition.water.density;
+  using Type = HydroForceDefinition::Type;
+  for (const HydroForceDefinition& force : definition.hydro_forces) {
+    const int link = model.link_index(force.body);
+    if (force.body == ModelBuilder::ground_name || link < 0)
+      throw hydro_error(definition, force.name, "body", "'" + force.body + "', which is not a body",
+                        "the name of a floating body");
+    std::unique_ptr<ForceElement> element;
+    std::shared_ptr<const hydro::WaveTrain> recorded_waves;
+    switch (force.type) {
+      case Type::hydrostatics:
+        if (force.nonlinear) {
+          element = std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
+        } else {
+          // F = f0 - C xi about the body frame origin; f0 = rho g V e_z, by default the
+          // body's weight so that the reference pose (the world frame) is the equilibrium.
+          hydro::Vector6 buoyancy = hydro::Vector6::Zero();
+          buoyancy[2] = force.displaced_volume ? rho * g * *force.displaced_volume : body_mass(definition, force.body) * g;
+          element = std::make_unique<hydro::LinearRestoring>(force.name, link, data.stiffness.at(force.name), buoyancy,
+                                                             Transform::Identity());
+        }
+        break;
+      case Type::radiation: {
+        const hydro::RadiationData& radiation = data.radiation.at(force.name);
+        const hydro::RetardationKernel kernel =
+            hydro::retardation_kernel(radiation, force.kernel_duration, force.kernel_step);
+        // Pair (i, j) is realised when both modes are asked for and its kernel is not
+        // negligible against its own diagonal: max|K_ij| > 1e-3 sqrt(max|K_ii| max|K_jj|)
+        // (dimensionally consistent, unlike a comparison across translation and rotation).
+        hydro::Matrix6 largest = hydro::Matrix6::Zero();
+        for (const hydro::Matrix6& K : kernel.values) largest = largest.cwiseMax(K.cwiseAbs());
+        std::vector<hydro::ModePairStateSpace> systems;
+        for (int i = 0; i < 6; ++i)
+          for (int j = 0; j < 6; ++j)
+            if (force.modes[i] && force.modes[j] && largest(i, j) > 0.0 &&
+                largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
+              systems.push_back(hydro::realize_kernel_entry(kernel, i, j, force.state_space_order));
+        for (const hydro::ModePairStateSpace& realised : systems)
+          if (!realised.stable)  // an unstable memory would grow without bound in the run
+            throw hydro_error(definition, force.name, "state_space_order",
+                              fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
+                                          realised.force_mode + 1, realised.velocity_mode + 1,
+                                          force.state_space_order, realised.r_squared),
+                              "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
+        element = std::make_unique<hydro::RadiationMemory>(force.name, link, std::move(systems));
+        break;
+      }
+      case Type::wave_excitation:
+        element = std::make_unique<hydro::WaveExcitation>(force.name, link, data.excitation.at(force.name), *waves);
+        recorded_waves = waves;
+        break;
+      case Type::linear_damping:
+        element = std::make_unique<hydro::BodyDamping>(force.name, link, force.matrix);
+        break;
+      case Type::quadratic_damping:
+        element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.vector);
+        break;
+      case Type::mooring:
+        element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.matrix, force.vector,
+                                                           Transform::Identity());
+        break;
+    }
+    system.add_force_element(std::make_unique<RecordedLoad>(std::move(element), model, link, recorded_waves));
+  }
+}
+
+}  // namespace heavesim
