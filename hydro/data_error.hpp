@@ -10,8 +10,7 @@ namespace heavesim::hydro {
 class DataError : public std::runtime_error {
  public:
   DataError(std::string file, int line, std::string found, std::string expected)
-      : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) + ": found " + found +
-                           "; expected " + expected),
+      : std::runtime_error(describe(file, line, found, expected)),
         file_(std::move(file)),
         line_(line),
         found_(std::move(found)),
@@ -22,6 +21,10 @@ class DataError : public std::runtime_error {
   const std::string& expected() const { return expected_; }
 
  private:
+  /// "file:line: found ...; expected ..." (out of line: GCC 12 reports false overflows
+  /// in inlined std::string concatenation chains, GCC bug 105329).
+  static std::string describe(const std::string& file, int line, const std::string& found,
+                              const std::string& expected);
   std::string file_;
   int line_;
   std::string found_, expected_;
