@@ -16,5 +16,9 @@ fi
 cmake --build "$build_dir" -j "$(nproc)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd "$build_dir" && ctest --output-on-failure -j "$(nproc)")
+# Left out here: HydroBodyResponse.ConvolutionElementMatchesStateSpaceElement, 40,000
+# convolutions over a 1,200-sample kernel: 4 s in the Release suite, 2 minutes under
+# the sanitizers. The convolution element's memory behaviour is still covered here by
+# the H5 convolution tests and in the Release no-allocation build.
+(cd "$build_dir" && ctest --output-on-failure -j "$(nproc)" -E '^HydroBodyResponse\.ConvolutionElementMatchesStateSpaceElement$')
 echo "sanitize: no sanitizer reports"
