@@ -34,8 +34,10 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
       // The moving side sits (mid-stroke + s) along the stroke axis from the base.
       const StrokeAxis& axis = p.element->axis();
       const BaseMotion base = base_motion(axis, model, data);
-      p.base_height.add(base.position_world.z());
-      p.load_height.add(base.position_world.z() + base.axis_world.z() * (axis.mid_stroke + s.stroke));
+      const double base_height = base.position_world.z();
+      const double load_height = base_height + base.axis_world.z() * (axis.mid_stroke + s.stroke);
+      p.base_height.add(&base_height);
+      p.load_height.add(&load_height);
     }
   }
   for (Active& a : active_) {
@@ -53,9 +55,9 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
 
 double CompensatorSummary::efficiency(std::size_t k) const {
   const Passive& p = passive_[k];
-  const double base = p.base_height.standard_deviation();
+  const double base = p.base_height.standard_deviation()[0];
   if (p.base_height.count() < 2 || base <= 1e-12) return std::numeric_limits<double>::quiet_NaN();
-  return 1.0 - p.load_height.standard_deviation() / base;
+  return 1.0 - p.load_height.standard_deviation()[0] / base;
 }
 
 void CompensatorSummary::write(ResultFile& file) const {
@@ -64,8 +66,8 @@ void CompensatorSummary::write(ResultFile& file) const {
     const std::string prefix = p.element->name() + "_";
     if (std::isfinite(efficiency(k))) file.set_attribute("/summary", prefix + "efficiency", efficiency(k));
     file.set_attribute("/summary", prefix + "efficiency_window_start_s", evaluate_after_);
-    file.set_attribute("/summary", prefix + "base_heave_std_m", p.base_height.standard_deviation());
-    file.set_attribute("/summary", prefix + "load_heave_std_m", p.load_height.standard_deviation());
+    file.set_attribute("/summary", prefix + "base_heave_std_m", p.base_height.standard_deviation()[0]);
+    file.set_attribute("/summary", prefix + "load_heave_std_m", p.load_height.standard_deviation()[0]);
     file.set_attribute("/summary", prefix + "stroke_min_m", p.min_stroke);
     file.set_attribute("/summary", prefix + "stroke_max_m", p.max_stroke);
     file.set_attribute("/summary", prefix + "end_stop_events_lower", p.monitor.lower_events());
@@ -95,7 +97,7 @@ std::vector<std::string> CompensatorSummary::headlines() const {
     if (std::isfinite(efficiency(k)))
       lines.push_back(fmt::format("compensator '{}': efficiency {:.4f} (1 - std of the load's heave {:.4g} m / std of "
                                   "the derrick top's {:.4g} m, from t = {:g} s)",
-                                  p.element->name(), efficiency(k), p.load_height.standard_deviation(), p.base_height.standard_deviation(),
+                                  p.element->name(), efficiency(k), p.load_height.standard_deviation()[0], p.base_height.standard_deviation()[0],
                                   evaluate_after_));
     lines.push_back(fmt::format(
         "compensator '{}': stroke {:.4g} .. {:.4g} m (stops {:g} .. {:g}), end-stop contacts {} lower / {} upper, "

@@ -10,34 +10,16 @@
 // window's samples. For a steady sinusoid sigma ratio = amplitude ratio, so this is the
 // regular-wave definition of offshore-model.md sec. 5.2 too (eta = 1 - Z_ds / Z_dt).
 // Written as /summary attributes and printed by `heavesim run`.
-#include <cmath>
 #include <string>
 #include <vector>
 
 #include "app/output/result_file.hpp"
+#include "app/output/running_statistics.hpp"
 #include "control/active/active_compensator.hpp"
 #include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
-
-/// Welford's running mean and variance (numerically stable for large offsets such as
-/// a derrick height of 60 m moving by 1 m).
-class RunningVariance {
- public:
-  void add(double x) {
-    ++count_;
-    const double delta = x - mean_;
-    mean_ += delta / static_cast<double>(count_);
-    sum_squares_ += delta * (x - mean_);
-  }
-  long count() const { return count_; }
-  double standard_deviation() const { return count_ > 1 ? std::sqrt(sum_squares_ / static_cast<double>(count_)) : 0.0; }
-
- private:
-  long count_ = 0;
-  double mean_ = 0.0, sum_squares_ = 0.0;
-};
 
 class CompensatorSummary {
  public:
@@ -59,7 +41,7 @@ class CompensatorSummary {
     EndStopMonitor monitor;
     double max_stroke = -1e300, min_stroke = 1e300, max_pressure = -1e300, min_pressure = 1e300;
     double max_temperature = -1e300, min_temperature = 1e300;
-    RunningVariance base_height{}, load_height{};  // m, over the evaluation window
+    RunningStatistics base_height{}, load_height{};  // m, over the evaluation window
   };
   struct Active {
     const ActiveCompensator* element;

@@ -24,6 +24,7 @@
 #include "kernel/model/model_builder.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "tests/test_support.hpp"
+#include "validation/checks/harmonic_fit.hpp"
 
 namespace heavesim::hydro {
 namespace {
@@ -153,14 +154,7 @@ TEST(HydroBodyResponse, H4RegularWaveRaoMatchesFrequencyDomain) {
         heave.push_back(integrator->state()[0]);
       }
     }
-    Eigen::MatrixXd basis(times.size(), 3);
-    Eigen::VectorXd values(times.size());
-    for (size_t n = 0; n < times.size(); ++n) {
-      basis.row(n) << std::cos(w * times[n]), std::sin(w * times[n]), 1.0;
-      values[n] = heave[n];
-    }
-    const Eigen::Vector3d c = basis.colPivHouseholderQr().solve(values);
-    const std::complex<double> time_domain(c[0], -c[1]);  // x = Re[xi e^{i w t}], wave amplitude 1 m
+    const std::complex<double> time_domain = validation::fit_harmonic(times, heave, w);  // x = Re[xi e^{i w t}], wave amplitude 1 m
     const std::complex<double> X3 = bem.excitation.force[0][std::find(bem.excitation.angular_frequencies.begin(),
                                                                         bem.excitation.angular_frequencies.end(), w) -
                                                               bem.excitation.angular_frequencies.begin()][2];

@@ -17,17 +17,21 @@
 namespace heavesim::hydro {
 namespace {
 
-TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
+/// A 200 t hull "hull" on a free joint, with the given added inertia (link frame).
+std::shared_ptr<const Model> floating_hull(const std::optional<Matrix6>& added_inertia) {
   ModelBuilder builder;
-  Matrix6 added = Matrix6::Identity() * 1e5;
-  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), added});
+  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), added_inertia});
   JointDefinition joint;
   joint.name = "float";
   joint.kind = JointKind::free;
   joint.parent = "ground";
   joint.child = "hull";
   builder.add_joint(joint);
-  auto model = std::make_shared<const Model>(builder.build());
+  return std::make_shared<const Model>(builder.build());
+}
+
+TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
+  auto model = floating_hull(Matrix6::Identity() * 1e5);
   const int link = model->link_index("hull");
   MultibodySystem system(model);
   system.add_force_element(std::make_unique<NonlinearHydrostatics>("buoyancy", link, box_mesh(Vector3(10, 8, 6), Vector3(0, 0, -1), 3)));
@@ -74,15 +78,7 @@ TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
   // The application's recording wrapper (app/scene/recorded_load.hpp) around a linear
   // restoring and a wave-excitation element: outputs() runs the wrapped apply() into its
   // own scratch forces.
-  ModelBuilder builder;
-  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), std::nullopt});
-  JointDefinition joint;
-  joint.name = "float";
-  joint.kind = JointKind::free;
-  joint.parent = "ground";
-  joint.child = "hull";
-  builder.add_joint(joint);
-  auto model = std::make_shared<const Model>(builder.build());
+  auto model = floating_hull(std::nullopt);
   const int link = model->link_index("hull");
   MultibodySystem system(model);
   ExcitationData excitation;

@@ -20,6 +20,7 @@
 #include "hydro/waves/wave_spectrum.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
+#include "validation/checks/harmonic_fit.hpp"
 #include "validation/checks/validation_suite.hpp"
 
 namespace heavesim::validation {
@@ -158,14 +159,8 @@ std::vector<ValidationRow> check_h4_regular_wave_rao() {
       integrator->advance_to(k * 0.05);
       if (k * 0.05 >= t_fit) times.push_back(k * 0.05), heave.push_back(integrator->state()[0]);
     }
-    Eigen::MatrixXd basis(times.size(), 3);
-    Eigen::VectorXd values(times.size());
-    for (size_t n = 0; n < times.size(); ++n) {
-      basis.row(n) << std::cos(w * times[n]), std::sin(w * times[n]), 1.0;
-      values[n] = heave[n];
-    }
-    const Eigen::Vector3d c = basis.colPivHouseholderQr().solve(values);
-    const std::complex<double> time_domain(c[0], -c[1]), i(0.0, 1.0);
+    const std::complex<double> time_domain = fit_harmonic(times, heave, w);  // x = Re[xi e^{i w t}], wave amplitude 1 m
+    const std::complex<double> i(0.0, 1.0);
     const size_t n = std::find(r.angular_frequencies.begin(), r.angular_frequencies.end(), w) - r.angular_frequencies.begin();
     const std::complex<double> X3 = bem.excitation.force[0][n][2];
     const std::complex<double> frequency_domain =
