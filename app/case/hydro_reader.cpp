@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "app/bem/bem_file.hpp"
+
 namespace heavesim {
 namespace {
 
@@ -139,7 +141,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     item.expect_map({"name", "type", "body", "hst", "mesh", "displaced_volume", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::hydrostatics;
     if (item.has("hst") == item.has("mesh"))
-      item.fail("exactly one of 'hst' (linear, a WAMIT .hst file) and 'mesh' (nonlinear, a .gdf or .stl hull)");
+      item.fail("exactly one of 'hst' (linear: a WAMIT .hst, BEMIO .h5 or Capytaine .nc file) and 'mesh' (nonlinear, a "
+                ".gdf or .stl hull)");
     def.file_key = item.has("hst") ? "hst" : "mesh";
     def.nonlinear = def.file_key == "mesh";
     if (auto volume = item.optional("displaced_volume")) {
@@ -201,7 +204,13 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     def.file = read_data_file(item[def.file_key]);
     fields[def.file_key] = item[def.file_key].location();
   }
-  if (auto scale = item.optional("length_scale")) def.length_scale = scale->positive_number();
+  if (auto scale = item.optional("length_scale")) {
+    // ULEN nondimensionalises WAMIT's files only; BEMIO and Capytaine store SI values.
+    if (!def.nonlinear && bem::bem_file_format(def.file) != bem::BemFileFormat::wamit)
+      scale->fail("'length_scale' with a BEMIO (.h5) or Capytaine (.nc) file",
+                  "no 'length_scale' (only WAMIT files are nondimensional in ULEN)");
+    def.length_scale = scale->positive_number();
+  }
   for (const char* key : {"state_space_order", "modes"})
     if (item.has(key)) fields[key] = item[key].location();
   definition.force_paths[name] = item.path();

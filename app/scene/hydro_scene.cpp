@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "app/bem/bem_file.hpp"
 #include "app/scene/recorded_load.hpp"
-#include "hydro/bem/wamit_reader.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
 #include "hydro/elements/radiation_memory.hpp"
@@ -27,7 +27,8 @@ InputError hydro_error(const CaseDefinition& definition, const std::string& name
   return InputError(location, definition.force_paths.at(name) + "." + field, found, expected);
 }
 
-/// Reads one data file; a DataError points at the case key and names the data file's line.
+/// Reads one data file; a DataError points at the case key and names the data file's line
+/// (or, for an HDF5 file, its dataset: the DataError's file is then "<path>:<dataset>").
 template <class Read>
 auto read_checked(const CaseDefinition& definition, const HydroForceDefinition& force, Read read) {
   try {
@@ -61,12 +62,12 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
         throw hydro_error(definition, force.name, "body", "a second radiation element on '" + force.body + "'",
                           "one radiation element per body (its A(inf) is the body's added inertia)");
       const auto& radiation = data.radiation[force.name] =
-          read_checked(definition, force, [&] { return hydro::read_wamit_1(force.file, s); });
+          read_checked(definition, force, [&] { return bem::read_radiation_file(force.file, s); });
       data.added_inertia[force.body] = hydro::added_inertia_in_body_frame(radiation.added_mass_infinite);
     } else if (force.type == Type::wave_excitation) {
-      data.excitation[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_3(force.file, s); });
+      data.excitation[force.name] = read_checked(definition, force, [&] { return bem::read_excitation_file(force.file, s); });
     } else if (force.type == Type::hydrostatics && !force.nonlinear) {
-      data.stiffness[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_hst(force.file, s); });
+      data.stiffness[force.name] = read_checked(definition, force, [&] { return bem::read_hydrostatic_stiffness_file(force.file, s); });
     } else if (force.type == Type::hydrostatics) {
       const bool stl = force.file.size() > 4 && (force.file.substr(force.file.size() - 4) == ".stl" ||
                                                  force.file.substr(force.file.size() - 4) == ".STL");

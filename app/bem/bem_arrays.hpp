@@ -1,0 +1,46 @@
+#pragma once
+// What the HDF5-based BEM readers (BEMIO, Capytaine) share: the case's fluid, arrays
+// read through named axes whatever order the file stores them in, and the checks on
+// the coefficients (finite values, symmetric added mass, ascending frequencies).
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "app/bem/hdf5_data_file.hpp"
+#include "hydro/bem/bem_data.hpp"
+
+namespace heavesim::bem {
+
+/// The case's water and gravity, which dimensionalise the coefficients (as for WAMIT).
+struct CaseFluid {
+  double density = 1025.0;  // rho [kg/m^3]
+  double gravity = 9.81;    // g [m/s^2]
+};
+
+/// A stored array indexed in a logical axis order: at({i, j, k}) with the indices in
+/// the order of `logical_to_stored` (logical axis a is stored axis logical_to_stored[a]).
+class AxisArray {
+ public:
+  AxisArray(Hdf5Array array, const std::vector<int>& logical_to_stored);
+  double at(std::initializer_list<std::size_t> logical_index) const;
+  std::size_t size(int logical_axis) const { return sizes_[logical_axis]; }
+
+ private:
+  Hdf5Array array_;
+  std::vector<std::size_t> strides_, sizes_;  // per logical axis
+};
+
+/// Fails with the dataset named unless `value` is finite; `what` says which entry.
+void check_finite(const Hdf5DataFile& file, const std::string& dataset, double value, const std::string& what);
+
+/// Checks |M_ij - M_ji| <= tol sqrt(|M_ii M_jj|) (tol = hydro::bem_symmetry_tolerance, as
+/// for WAMIT files) and symmetrises M; `at` says where (e.g. "at w = 0.5 rad/s").
+void symmetrise_checked(const Hdf5DataFile& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
+                        const std::string& at);
+
+/// Orders the finite-frequency entries by ascending frequency and fails (naming
+/// `dataset`) when a frequency repeats.
+void sort_by_frequency(const Hdf5DataFile& file, const std::string& dataset, hydro::RadiationData& data);
+void sort_by_frequency_and_heading(const Hdf5DataFile& file, const std::string& dataset, hydro::ExcitationData& data);
+
+}  // namespace heavesim::bem

@@ -1,0 +1,192 @@
+#include "app/bem/hdf5_data_file.hpp"
+
+#include <hdf5_hl.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <numeric>
+
+#include <fmt/format.h>
+
+namespace heavesim::bem {
+namespace {
+
+/// Closes an HDF5 handle of any kind when it goes out of scope.
+class Handle {
+ public:
+  explicit Handle(hid_t id) : id_(id) {}
+  ~Handle() {
+    if (id_ >= 0) H5Idec_ref(id_);
+  }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_;
+};
+
+std::vector<hsize_t> dataspace_shape(hid_t dataset) {
+  const Handle space(H5Dget_space(dataset));
+  const int rank = H5Sget_simple_extent_ndims(space.get());
+  std::vector<hsize_t> shape(std::max(rank, 0));
+  if (rank > 0) H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
+  return shape;
+}
+
+std::size_t element_count(const std::vector<hsize_t>& shape) {
+  return std::accumulate(shape.begin(), shape.end(), std::size_t{1},
+                         [](std::size_t n, hsize_t d) { return n * static_cast<std::size_t>(d); });
+}
+
+/// Strings of a dataset or attribute of string type `stored` (fixed or variable
+/// length); `read(memory_type, buffer)` reads it.
+template <class Read>
+std::vector<std::string> read_string_elements(hid_t stored, std::size_t count, Read read) {
+  std::vector<std::string> texts;
+  if (H5Tis_variable_str(stored) > 0) {
+    const Handle memory(H5Tcopy(H5T_C_S1));
+    H5Tset_size(memory.get(), H5T_VARIABLE);
+    H5Tset_cset(memory.get(), H5Tget_cset(stored));
+    std::vector<char*> pointers(count, nullptr);
+    if (read(memory.get(), pointers.data()) < 0) return {};
+    for (char* p : pointers) {
+      texts.emplace_back(p ? p : "");
+      H5free_memory(p);
+    }
+    return texts;
+  }
+  const std::size_t size = H5Tget_size(stored);
+  const Handle memory(H5Tcopy(H5T_C_S1));
+  H5Tset_size(memory.get(), size);
+  H5Tset_strpad(memory.get(), H5T_STR_NULLPAD);
+  std::vector<char> buffer(size * count + 1, '\0');
+  if (read(memory.get(), buffer.data()) < 0) return {};
+  for (std::size_t k = 0; k < count; ++k) {
+    const char* begin = buffer.data() + k * size;
+    texts.emplace_back(begin, std::find(begin, begin + size, '\0'));
+  }
+  return texts;
+}
+
+herr_t record_scale_name(hid_t /*dataset*/, unsigned /*axis*/, hid_t scale, void* name) {
+  // The scale's own dataset name: netCDF4 names a dimension after its coordinate
+  // variable (the NAME attribute of a dimension without one is a placeholder text).
+  const ssize_t length = H5Iget_name(scale, nullptr, 0);
+  std::string path(static_cast<std::size_t>(std::max<ssize_t>(length, 0)), '\0');
+  if (length > 0) H5Iget_name(scale, path.data(), path.size() + 1);
+  *static_cast<std::string*>(name) = path.substr(path.find_last_of('/') + 1);
+  return 1;  // the first scale of the axis names it
+}
+
+}  // namespace
+
+std::string shape_text(const std::vector<hsize_t>& shape) {
+  std::string text = "(";
+  for (std::size_t k = 0; k < shape.size(); ++k) text += (k ? ", " : "") + std::to_string(shape[k]);
+  return text + ")";
+}
+
+Hdf5DataFile::Hdf5DataFile(std::string path, std::string kind) : path_(std::move(path)), kind_(std::move(kind)) {
+  // Errors are reported by return codes below, not by HDF5's own stack print.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  if (!std::filesystem::is_regular_file(path_))
+    throw hydro::DataError(path_, 0, "a file that cannot be opened", "a readable " + kind_);
+  if (H5Fis_hdf5(path_.c_str()) <= 0)
+    throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_ + " (HDF5)");
+  file_ = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (file_ < 0)
+    throw hydro::DataError(path_, 0, "an HDF5 file that cannot be opened (truncated or damaged)", "a complete " + kind_);
+}
+
+Hdf5DataFile::~Hdf5DataFile() {
+  if (file_ >= 0) H5Fclose(file_);
+}
+
+void Hdf5DataFile::fail(const std::string& object, const std::string& found, const std::string& expected) const {
+  throw hydro::DataError(path_ + ":" + object, 0, found, expected);
+}
+
+bool Hdf5DataFile::has(const std::string& object) const {
+  // H5Lexists fails (rather than saying no) when an intermediate group is missing, so
+  // every prefix is checked in turn.
+  for (std::size_t end = object.find('/', 1);; end = object.find('/', end + 1)) {
+    const std::string prefix = object.substr(0, end);
+    if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (end == std::string::npos) return true;
+  }
+}
+
+hid_t Hdf5DataFile::open_dataset(const std::string& dataset) const {
+  if (!has(dataset)) fail(dataset, "no such dataset", fmt::format("the dataset {} of {}", dataset, kind_));
+  const hid_t id = H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT);
+  if (id < 0) fail(dataset, "an object that is not a dataset (or cannot be read)", "a dataset");
+  return id;
+}
+
+std::vector<hsize_t> Hdf5DataFile::shape(const std::string& dataset) const {
+  const Handle id(open_dataset(dataset));
+  return dataspace_shape(id.get());
+}
+
+Hdf5Array Hdf5DataFile::read(const std::string& dataset) const {
+  const Handle id(open_dataset(dataset));
+  const Handle type(H5Dget_type(id.get()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT)
+    fail(dataset, "a dataset that does not hold numbers", "a numeric (integer or floating-point) dataset");
+  Hdf5Array array;
+  array.shape = dataspace_shape(id.get());
+  array.values.resize(element_count(array.shape));
+  if (H5Dread(id.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, array.values.data()) < 0)
+    fail(dataset, "data that cannot be read (damaged file)", "a readable dataset");
+  return array;
+}
+
+double Hdf5DataFile::read_scalar(const std::string& dataset) const {
+  const Hdf5Array array = read(dataset);
+  if (array.values.size() != 1) fail(dataset, "shape " + shape_text(array.shape), "a single number");
+  return array.values[0];
+}
+
+std::vector<std::string> Hdf5DataFile::read_strings(const std::string& dataset) const {
+  const Handle id(open_dataset(dataset));
+  const Handle type(H5Dget_type(id.get()));
+  if (H5Tget_class(type.get()) != H5T_STRING) fail(dataset, "a dataset that does not hold text", "strings");
+  const std::size_t count = element_count(dataspace_shape(id.get()));
+  return read_string_elements(type.get(), count, [&](hid_t memory, void* buffer) {
+    return H5Dread(id.get(), memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
+  });
+}
+
+std::optional<std::string> Hdf5DataFile::text_attribute(const std::string& object, const std::string& name) const {
+  if (H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+  const Handle attribute(H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+  const Handle type(H5Aget_type(attribute.get()));
+  if (H5Tget_class(type.get()) != H5T_STRING) fail(object, "a '" + name + "' attribute that is not text", "text");
+  const Handle space(H5Aget_space(attribute.get()));
+  const auto count = static_cast<std::size_t>(std::max<hssize_t>(H5Sget_simple_extent_npoints(space.get()), 0));
+  const std::vector<std::string> texts = read_string_elements(
+      type.get(), count, [&](hid_t memory, void* buffer) { return H5Aread(attribute.get(), memory, buffer); });
+  return texts.empty() ? std::string() : texts.front();
+}
+
+std::vector<std::string> Hdf5DataFile::dimension_names(const std::string& dataset) const {
+  const Handle id(open_dataset(dataset));
+  std::vector<std::string> names(dataspace_shape(id.get()).size());
+  for (std::size_t axis = 0; axis < names.size(); ++axis) {
+    int index = 0;
+    if (H5DSget_num_scales(id.get(), static_cast<unsigned>(axis)) > 0)
+      H5DSiterate_scales(id.get(), static_cast<unsigned>(axis), &index, record_scale_name, &names[axis]);
+  }
+  return names;
+}
+
+void Hdf5DataFile::check_units(const std::string& dataset, const std::vector<std::string>& accepted) const {
+  const std::optional<std::string> units = text_attribute(dataset, "units");
+  if (!units || std::find(accepted.begin(), accepted.end(), *units) != accepted.end()) return;
+  fail(dataset, fmt::format("units = '{}'", *units), fmt::format("units '{}'", fmt::join(accepted, "' or '")));
+}
+
+}  // namespace heavesim::bem

@@ -1,0 +1,64 @@
+#pragma once
+// Read-only access to the datasets of an HDF5 file for the BEM readers (BEMIO .h5 and
+// Capytaine's netCDF4 .nc, which is HDF5 underneath). Every failure is a
+// hydro::DataError whose file is "<path>:<dataset path>": in an HDF5 file the dataset
+// is what a line is in a text file. The message says what was found and what was
+// expected, like the WAMIT reader's.
+#include <hdf5.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "hydro/data_error.hpp"
+
+namespace heavesim::bem {
+
+/// A numeric dataset converted to double, values in C (row-major) order of its shape.
+struct Hdf5Array {
+  std::vector<hsize_t> shape;  // HDF5 (C) order of the dimensions as stored
+  std::vector<double> values;
+};
+
+class Hdf5DataFile {
+ public:
+  /// Opens `path` read-only; `kind` names the format for errors ("a BEMIO HDF5 file").
+  Hdf5DataFile(std::string path, std::string kind);
+  ~Hdf5DataFile();
+  Hdf5DataFile(const Hdf5DataFile&) = delete;
+  Hdf5DataFile& operator=(const Hdf5DataFile&) = delete;
+
+  const std::string& path() const { return path_; }
+  bool has(const std::string& object) const;
+
+  /// The dataset's shape, whatever it holds.
+  std::vector<hsize_t> shape(const std::string& dataset) const;
+  /// A numeric dataset of any stored type, converted to double (NaN and inf kept).
+  Hdf5Array read(const std::string& dataset) const;
+  /// A dataset holding exactly one number.
+  double read_scalar(const std::string& dataset) const;
+  /// A string dataset (fixed or variable length), one entry per element.
+  std::vector<std::string> read_strings(const std::string& dataset) const;
+  /// The dataset's string attribute `name`, if it has one.
+  std::optional<std::string> text_attribute(const std::string& object, const std::string& name) const;
+  /// The dataset's dimension names (netCDF4: the names of the dimension scales attached
+  /// to each axis, H5DS); "" for an axis with none.
+  std::vector<std::string> dimension_names(const std::string& dataset) const;
+
+  /// Fails unless the `units` attribute, when the dataset has one, is one of `accepted`.
+  void check_units(const std::string& dataset, const std::vector<std::string>& accepted) const;
+
+  /// Throws the DataError for `object` ("<path>:<object>: found ...; expected ...").
+  [[noreturn]] void fail(const std::string& object, const std::string& found, const std::string& expected) const;
+
+ private:
+  hid_t open_dataset(const std::string& dataset) const;
+
+  std::string path_, kind_;
+  hid_t file_ = -1;
+};
+
+/// "(a, b, c)" for a shape, in messages.
+std::string shape_text(const std::vector<hsize_t>& shape);
+
+}  // namespace heavesim::bem
