@@ -211,7 +211,8 @@ def main():
     b[coeffs + "radiation_damping/all"] = (a[:, :, :-1], at); faults["bemio_frequency_count_mismatch"] = b
     b = bemio_datasets(d); a, at = b[coeffs + "radiation_damping/all"]; a = a.copy(); a[2, 2, 4] = np.nan
     b[coeffs + "radiation_damping/all"] = (a, at); faults["bemio_nan_damping"] = b
-    b = bemio_datasets(d); a, at = b[coeffs + "added_mass/all"]; a = a.copy(); a[0, 4, 3] *= 3.0
+    b = bemio_datasets(d); a, at = b[coeffs + "added_mass/all"]; a = a.copy()
+    a[0, 4, 3] = a[4, 0, 3] + 0.1 * np.sqrt(a[0, 0, 3] * a[4, 4, 3])  # beyond the 2 % symmetry tolerance
     b[coeffs + "added_mass/all"] = (a, at); faults["bemio_asymmetric_added_mass"] = b
     b = bemio_datasets(d); b["/simulation_parameters/scaled"] = (2, {}); faults["bemio_scaled_flag_invalid"] = b
     b = bemio_datasets(d); b["/simulation_parameters/w"] = (d["w"] / (2 * np.pi), {"units": "Hz"})
@@ -235,7 +236,8 @@ def main():
     v = capytaine_variables(d); value, dims, at = v["diffraction_force"]; value = value.copy()
     value[5, 1, 2, 0] = np.nan; v["diffraction_force"] = (value, dims, at); faults["capytaine_nan_diffraction"] = v
     v = capytaine_variables(d); value, dims, at = v["added_mass"]; value = value.copy()
-    value[3, 4, 0] *= 3.0; v["added_mass"] = (value, dims, at); faults["capytaine_asymmetric_added_mass"] = v
+    value[3, 4, 0] = value[3, 0, 4] + 0.1 * np.sqrt(value[3, 0, 0] * value[3, 4, 4])
+    v["added_mass"] = (value, dims, at); faults["capytaine_asymmetric_added_mass"] = v
     v = capytaine_variables(d); v["wave_direction"] = (np.array(HEADINGS_DEG), ("wave_direction",), {"units": "deg"})
     faults["capytaine_wrong_units"] = v
     v = capytaine_variables(d); del v["radiation_damping"]; faults["capytaine_missing_radiation_damping"] = v
