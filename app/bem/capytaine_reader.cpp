@@ -84,31 +84,45 @@ class CapytaineFile {
     return value;
   }
 
+  /// M(i, j) = factor value(a, b) for influenced dof a (mode i) and radiating dof b
+  /// (mode j), every value finite; `at` names the other indices for errors.
+  template <class Value>
+  hydro::Matrix6 dof_matrix(const std::string& variable, double factor, const std::string& at, Value value) const {
+    hydro::Matrix6 M = hydro::Matrix6::Zero();
+    for (std::size_t a = 0; a < influenced.size(); ++a)
+      for (std::size_t b = 0; b < radiating.size(); ++b) {
+        const double v = value(a, b);
+        check_finite(file, variable, v,
+                     fmt::format("the entry {}influenced_dof = {}, radiating_dof = {}", at, dof_names[influenced[a]],
+                                 dof_names[radiating[b]]));
+        M(influenced[a], radiating[b]) = factor * v;
+      }
+    return M;
+  }
+
   Hdf5DataFile file;
+  std::vector<int> influenced, radiating;  // modes of the dof coordinates, once read_dofs() ran
+
+  void read_dofs() {
+    influenced = modes("influenced_dof");
+    radiating = modes("radiating_dof");
+  }
 };
 
 }  // namespace
 
 hydro::RadiationData read_capytaine_radiation(const std::string& path, const CaseFluid& fluid) {
-  const CapytaineFile capytaine(path);
+  CapytaineFile capytaine(path);
   const Hdf5DataFile& file = capytaine.file;
   const std::vector<std::string> dimensions = {"omega", "influenced_dof", "radiating_dof"};
   const AxisArray A = capytaine.variable("added_mass", dimensions);
   const AxisArray B = capytaine.variable("radiation_damping", dimensions);
   const std::vector<double> omega = capytaine.frequencies();
-  const std::vector<int> influenced = capytaine.modes("influenced_dof"), radiating = capytaine.modes("radiating_dof");
+  capytaine.read_dofs();
   const double factor = fluid.density / capytaine.positive("rho");
   auto matrix = [&](const AxisArray& array, const std::string& variable, std::size_t k) {
-    hydro::Matrix6 M = hydro::Matrix6::Zero();
-    for (std::size_t a = 0; a < influenced.size(); ++a)
-      for (std::size_t b = 0; b < radiating.size(); ++b) {
-        const double value = array.at({k, a, b});
-        check_finite(file, variable, value,
-                     fmt::format("the entry omega = {:g}, influenced_dof = {}, radiating_dof = {}", omega[k],
-                                 dof_names[influenced[a]], dof_names[radiating[b]]));
-        M(influenced[a], radiating[b]) = factor * value;
-      }
-    return M;
+    return capytaine.dof_matrix(variable, factor, fmt::format("omega = {:g}, ", omega[k]),
+                                [&](std::size_t a, std::size_t b) { return array.at({k, a, b}); });
   };
   hydro::RadiationData data;
   bool has_infinite = false;
@@ -193,20 +207,12 @@ hydro::ExcitationData read_capytaine_excitation(const std::string& path, const C
 }
 
 hydro::Matrix6 read_capytaine_hydrostatic_stiffness(const std::string& path, const CaseFluid& fluid) {
-  const CapytaineFile capytaine(path);
+  CapytaineFile capytaine(path);
   const AxisArray stiffness = capytaine.variable("hydrostatic_stiffness", {"influenced_dof", "radiating_dof"});
-  const std::vector<int> influenced = capytaine.modes("influenced_dof"), radiating = capytaine.modes("radiating_dof");
+  capytaine.read_dofs();
   const double factor = fluid.density * fluid.gravity / (capytaine.positive("rho") * capytaine.positive("g"));
-  hydro::Matrix6 C = hydro::Matrix6::Zero();
-  for (std::size_t a = 0; a < influenced.size(); ++a)
-    for (std::size_t b = 0; b < radiating.size(); ++b) {
-      const double value = stiffness.at({a, b});
-      check_finite(capytaine.file, "/hydrostatic_stiffness", value,
-                   fmt::format("the entry influenced_dof = {}, radiating_dof = {}", dof_names[influenced[a]],
-                               dof_names[radiating[b]]));
-      C(influenced[a], radiating[b]) = factor * value;
-    }
-  return C;
+  return capytaine.dof_matrix("/hydrostatic_stiffness", factor, "",
+                              [&](std::size_t a, std::size_t b) { return stiffness.at({a, b}); });
 }
 
 }  // namespace heavesim::bem
