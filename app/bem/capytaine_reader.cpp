@@ -19,7 +19,7 @@ std::string quoted_list(const std::vector<std::string>& names) {
 
 class CapytaineFile {
  public:
-  explicit CapytaineFile(const std::string& path) : file(path, "a Capytaine NetCDF4 file") {}
+  explicit CapytaineFile(const std::string& path) : file(path, "a Capytaine NetCDF4 file (HDF5-based; netCDF3 classic files are not read)") {}
 
   /// The variable `name` read through the axes `dimensions` (dimension names, in that
   /// logical order), each axis's length checked against its coordinate's.

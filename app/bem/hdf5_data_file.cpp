@@ -94,10 +94,10 @@ Hdf5DataFile::Hdf5DataFile(std::string path, std::string kind) : path_(std::move
   if (!std::filesystem::is_regular_file(path_))
     throw hydro::DataError(path_, 0, "a file that cannot be opened", "a readable " + kind_);
   if (H5Fis_hdf5(path_.c_str()) <= 0)
-    throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_ + " (HDF5)");
+    throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_);
   file_ = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   if (file_ < 0)
-    throw hydro::DataError(path_, 0, "an HDF5 file that cannot be opened (truncated or damaged)", "a complete " + kind_);
+    throw hydro::DataError(path_, 0, "an HDF5 file that cannot be opened (truncated or damaged)", kind_ + ", complete");
 }
 
 Hdf5DataFile::~Hdf5DataFile() {
