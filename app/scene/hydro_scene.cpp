@@ -74,7 +74,8 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
     } else if (force.type == Type::wave_excitation && force.heave_estimate) {
       // Evaluated at the sea's own component frequencies: exact, no interpolation.
       std::vector<double> frequencies;
-      for (const hydro::WaveComponent& c : wave_train(definition).components()) frequencies.push_back(c.angular_frequency);
+      const hydro::WaveTrain waves = wave_train(definition);
+      for (const hydro::WaveComponent& c : waves.components()) frequencies.push_back(c.angular_frequency);
       data.excitation[force.name] = hydro::semisubmersible_heave_excitation_table(
           *force.heave_estimate, frequencies, definition.water.density, definition.gravity.norm());
     } else if (force.type == Type::wave_excitation) {
