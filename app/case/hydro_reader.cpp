@@ -226,7 +226,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     item.expect_map({"name", "type", "body", "matrix", "description"});
     def.type = HydroForceDefinition::Type::added_mass;
     def.matrix = read_matrix6(item["matrix"]);
-    check_symmetric_positive(item["matrix"], def.matrix, "added mass");
+    check_symmetric_positive(item["matrix"], def.matrix, "mass");
   } else {
     item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
     def.type = HydroForceDefinition::Type::mooring;
