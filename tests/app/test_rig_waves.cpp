@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <complex>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -49,6 +50,21 @@ std::pair<std::vector<double>, std::vector<double>> window(const std::vector<dou
 double harmonic_amplitude(const std::vector<double>& time, const std::vector<double>& x, double w, double from) {
   const auto [t, values] = window(time, x, from);
   return std::abs(validation::fit_harmonic(t, values, w));
+}
+
+TEST(RigWaves, EveryCaseOfTheMatrixChecks) {
+  for (const char* file :
+       {"cases/drilling.yaml", "cases/c0_static/h0_passive.yaml", "cases/c0_static/h1_passive.yaml",
+        "cases/c3_regular_waves/h0_locked.yaml", "cases/c3_regular_waves/h0_passive.yaml",
+        "cases/c3_regular_waves/h0_active.yaml", "cases/c3_regular_waves/h0_active_hydraulic.yaml",
+        "cases/c3_regular_waves/semi_rao.yaml", "cases/c4_irregular_waves/h0_locked.yaml",
+        "cases/c4_irregular_waves/h0_passive.yaml", "cases/c4_irregular_waves/h0_active.yaml",
+        "cases/c4_irregular_waves/h1_active_hydraulic_3h.yaml", "cases/c5_bit_on_bottom/h0_passive.yaml",
+        "cases/c5_bit_on_bottom/h0_active.yaml"}) {
+    const testing::CommandResult result =
+        testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
+    EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
+  }
 }
 
 // The §3.3 table was computed from the fallback coefficients with m = Delta (no rig):
@@ -105,6 +121,31 @@ TEST(RigWaves, C0StaticReactionsAreTheHandSummedWeights) {
   std::filesystem::remove(output);
 }
 
+// C0 on H1: the crown block is welded to both rods (the loop crown_on_b). By symmetry
+// (the load hangs on the derrick axis, midway between the rods) each cylinder carries
+// half of everything above the platform's guides, its own rod included, and each weld
+// half of the crown block and what hangs from it; the loop's multiplier is that half,
+// pushing rod_b down. Gas pressure given: the stroke must stay at 0 +- 1 mm.
+TEST(RigWaves, C0StaticReactionsOfTheClosedLoopH1) {
+  const std::string output = temporary("c0_h1.h5");
+  const testing::CommandResult result = run("cases/c0_static/h1_passive.yaml", output);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  H5File file(output);
+  const double hanging = (m_crown + m_tb + m_td + m_string) * g - string_buoyancy;  // N, crown and below
+  const double per_cylinder = 0.5 * hanging + 5000.0 * g;
+  const std::vector<std::tuple<std::string, double>> expected = {{"/joints/cylinder_a/reaction_force", per_cylinder},
+                                                                 {"/joints/cylinder_b/reaction_force", per_cylinder},
+                                                                 {"/joints/crown_on_a/reaction_force", 0.5 * hanging},
+                                                                 {"/constraints/crown_on_b/reaction_force", -0.5 * hanging}};
+  for (const auto& [path, load] : expected) {
+    const std::vector<double> force = file.read(path);
+    for (std::size_t k = 0; k < force.size(); k += 3) EXPECT_NEAR(force[k + 2], load, 1.0) << path << " sample " << k / 3;
+  }
+  for (const char* stroke : {"/forces/passive_a/stroke", "/forces/passive_b/stroke"})
+    for (double s : file.read(stroke)) EXPECT_NEAR(s, 0.0, 1e-3) << stroke;
+  std::filesystem::remove(output);
+}
+
 // C3 passive at T = 10 and 14 s: a 1-DoF load M on a gas spring k riding the derrick
 // top, z_crown / z_derrick = k / (k - M w^2), whatever moved the derrick (the platform
 // feels the compensator, but the ratio only needs the derrick motion the run
@@ -127,7 +168,9 @@ TEST(RigWaves, C3PassiveEfficiencyIsTheGasSpringTransmissibility) {
     const double crown = harmonic_amplitude(time, column(file.read("/bodies/crown/position"), 2), w, 300.0);
     const double expected = 1.0 - std::abs(k_gas / (k_gas - M * w * w));
     EXPECT_NEAR(1.0 - crown / derrick, expected, 0.005) << "T = " << T << " s";
-    if (T == 10.0) EXPECT_NEAR(derrick, 0.75, 0.03) << "offshore-model.md §5.2: platform heave ~0.75 m at a = 2 m";
+    if (T == 10.0) {
+      EXPECT_NEAR(derrick, 0.75, 0.03) << "offshore-model.md §5.2: platform heave ~0.75 m at a = 2 m";
+    }
     std::filesystem::remove(output);
   }
 }
