@@ -20,15 +20,20 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
 }
 
 Vector6 WaveExcitation::load(double t) const {
+  if (t == cached_time_) return cached_load_;
   const double ramp = waves_.ramp()(t);
   Vector6 f = Vector6::Zero();
-  if (ramp == 0.0) return f;
-  const auto& components = waves_.components();
-  for (size_t j = 0; j < components.size(); ++j) {
-    const std::complex<double> rotation = std::polar(1.0, components[j].angular_frequency * t);
-    for (int i = 0; i < 6; ++i) f[i] += (amplitude_[j][i] * rotation).real();
+  if (ramp != 0.0) {
+    const auto& components = waves_.components();
+    for (size_t j = 0; j < components.size(); ++j) {
+      const std::complex<double> rotation = std::polar(1.0, components[j].angular_frequency * t);
+      for (int i = 0; i < 6; ++i) f[i] += (amplitude_[j][i] * rotation).real();
+    }
+    f *= ramp;
   }
-  return ramp * f;
+  cached_time_ = t;
+  cached_load_ = f;
+  return f;
 }
 
 void WaveExcitation::apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX>,

@@ -5,6 +5,8 @@
 // body's mean horizontal position (linear theory: the wave is taken at the mean
 // position, not the instantaneous one). X per component is interpolated once at
 // construction (excitation_interpolation.hpp), so apply() only sums cosines.
+#include <limits>
+
 #include "hydro/bem/bem_data.hpp"
 #include "hydro/elements/body_motion.hpp"
 #include "hydro/waves/wave_train.hpp"
@@ -31,6 +33,11 @@ class WaveExcitation : public ForceElement {
   Eigen::Vector2d mean_position_;
   std::vector<ComplexVector6> amplitude_;  // X(w_j, beta_j) a_j e^{i(phi_j - k_j x0 . e_beta)}
   std::vector<ElementChannel> channels_;
+  // The load depends on t only, and an implicit integrator evaluates the forces many
+  // times at one t (Newton iterations, the Newton matrix's difference columns): the last
+  // sum is kept. Not thread-safe; an element belongs to one system.
+  mutable double cached_time_ = std::numeric_limits<double>::quiet_NaN();
+  mutable Vector6 cached_load_ = Vector6::Zero();
 };
 
 }  // namespace heavesim::hydro

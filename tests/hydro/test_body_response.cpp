@@ -235,6 +235,12 @@ TEST(HydroBodyResponse, IrregularWaveResponseIsTheSumOfRaoResponses) {
   const WaveExcitation down_wave("down", link, bem.excitation, single, Eigen::Vector2d(x0, 0.0));
   for (double t : {100.0, 103.0, 107.5})
     EXPECT_NEAR(down_wave.load(t)[2], at_origin.load(t - x0 / c)[2], 1e-6 * std::abs(rao[1]) * C33);
+  // The element keeps its last load (an implicit integrator asks for it many times at
+  // one t): repeated and alternating times give what a new element gives at each time.
+  for (double t : {100.0, 100.0, 103.0, 100.0, 0.0}) {
+    const WaveExcitation fresh("fresh", link, bem.excitation, single);
+    EXPECT_TRUE(at_origin.load(t) == fresh.load(t)) << "t = " << t;
+  }
 }
 
 // LinearRestoring and BodyDamping on a free body away from the origin: the
