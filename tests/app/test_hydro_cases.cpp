@@ -50,7 +50,7 @@ double crossing_period(const std::vector<double>& time, const std::vector<double
 TEST(HydroCases, EveryHydroCaseChecks) {
   for (const char* file : {"cases/hydro/heave_decay.yaml", "cases/hydro/regular_wave.yaml",
                            "cases/hydro/irregular_sea.yaml", "cases/hydro/heave_decay_nonlinear.yaml",
-                           "cases/hydro/semisub_6dof.yaml", "cases/hydro/semisub_6dof_roll_decay.yaml",
+                           "cases/hydro/semisub_6dof_roll_decay.yaml",
                            "cases/hydro/semisub_6dof_pitch_decay.yaml", "cases/hydro/semisub_6dof_regular_wave.yaml",
                            "cases/hydro/semisub_6dof_irregular_sea.yaml"}) {
     const testing::CommandResult result =
