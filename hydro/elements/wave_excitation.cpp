@@ -1,5 +1,6 @@
 #include "hydro/elements/wave_excitation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hydro/excitation/excitation_interpolation.hpp"
@@ -16,6 +17,9 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
   sine_weights_.resize(7, n);
   cosines_.setZero(n);
   sines_.setZero(n);
+  rotation_cosines_.setZero(n);
+  rotation_sines_.setZero(n);
+  scratch_.setZero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const WaveComponent& c = components[j];
     const double phase = c.phase - c.wave_number * (mean_position.x() * std::cos(c.heading) +
@@ -30,18 +34,48 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
                {"excitation_force_z", "N", "wave excitation force, world z"}};
 }
 
+void WaveExcitation::update_phasors(double t) const {
+  const double delta = t - phasor_time_;  // NaN before the first evaluation
+  // Within a few roundings of tau: the same instant (an output time set to the requested
+  // value rather than the accumulated one, e.g.).
+  const double tolerance = 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(t));
+  if (std::abs(delta) <= tolerance) return;
+  if (rotations_since_direct_ < 1024 && std::abs(delta - rotation_step_) <= tolerance) {
+    // (c + i s)(rc + i rs); phasor_time_ becomes tau + delta_kept, within the tolerance of t.
+    scratch_ = cosines_;
+    cosines_.array() = scratch_.array() * rotation_cosines_.array() - sines_.array() * rotation_sines_.array();
+    sines_.array() = scratch_.array() * rotation_sines_.array() + sines_.array() * rotation_cosines_.array();
+    phasor_time_ += rotation_step_;
+    ++rotations_since_direct_;
+    return;
+  }
+  // Directly from t; a step seen twice in a row (a fixed-step method: h/2 for RK4) is
+  // kept as the rotation for the next evaluations. Adaptive steps keep changing and are
+  // never kept, so they cost one sincos per component, as a direct sum does.
+  const bool keep_step = std::abs(delta - previous_step_) <= tolerance && !(std::abs(delta - rotation_step_) <= tolerance);
+  for (Eigen::Index j = 0; j < angular_frequencies_.size(); ++j) {
+    const double w = angular_frequencies_[j];
+    cosines_[j] = std::cos(w * t);  // the compiler pairs each cos with its sin in one sincos call
+    sines_[j] = std::sin(w * t);
+    if (keep_step) {
+      rotation_cosines_[j] = std::cos(w * delta);
+      rotation_sines_[j] = std::sin(w * delta);
+    }
+  }
+  if (keep_step) rotation_step_ = delta;
+  previous_step_ = delta;
+  phasor_time_ = t;
+  rotations_since_direct_ = 0;
+}
+
 const WaveExcitation::Vector7& WaveExcitation::evaluate(double t) const {
   if (t == cached_time_) return cached_value_;
   const double ramp = waves_.ramp()(t);
   if (ramp == 0.0) {
     cached_value_.setZero();
   } else {
+    update_phasors(t);
     // Re[W e^{i w t}] = Re W cos w t - Im W sin w t.
-    for (Eigen::Index j = 0; j < angular_frequencies_.size(); ++j) {
-      const double phase = angular_frequencies_[j] * t;
-      cosines_[j] = std::cos(phase);  // the compiler pairs these into one sincos call
-      sines_[j] = std::sin(phase);
-    }
     cached_value_.noalias() = cosine_weights_ * cosines_;
     cached_value_.noalias() -= sine_weights_ * sines_;
     cached_value_ *= ramp;

@@ -7,12 +7,19 @@
 // construction (excitation_interpolation.hpp).
 //
 // Evaluation (the hot path of a sea-state run: 200 components at every right-hand side):
-// with c_j = cos w_j t and s_j = sin w_j t (one sincos per component),
+// with the phasors c_j + i s_j = e^{i w_j t},
 //   [F; eta(x0, y0)] = R(t) (W_c c - W_s s),  W_c = Re[X_j a_j e^{i phi'_j}], W_s = Im[...],
 // one 7 x N matrix-vector product (6 load components and the elevation at the mean
-// position share the sincos). F depends on t only, so the last evaluation is kept and
-// reused at the same t (a fixed-step Runge-Kutta evaluates the midpoint twice and the
-// end of a step again at the start of the next; the recorder asks at the output time).
+// position share the phasors). F depends on t only, so
+//  * the last evaluation is kept and reused at the same t (a fixed-step Runge-Kutta
+//    evaluates the midpoint twice and the end of a step again at the start of the next;
+//    the recorder asks at the output time);
+//  * the phasors move from the last time tau to t by a rotation, e^{i w t} = e^{i w tau}
+//    e^{i w (t - tau)}: the rotation for the last step t - tau is kept, so a run with a
+//    fixed step pays one complex product per component instead of a sincos (6 flops
+//    instead of about 20 ns). Every 1024 rotations, and whenever the step changes, the
+//    phasors are recomputed from t directly, so rounding cannot accumulate (phase errors
+//    stay below 1e-9 rad over 3 hours).
 // No allocation after construction. Not thread-safe (the cache is mutable state).
 #include <limits>
 
@@ -41,6 +48,8 @@ class WaveExcitation : public ForceElement {
   using Vector7 = Eigen::Matrix<double, 7, 1>;
   /// [F (WAMIT order); eta(x0, y0)] at time t, ramped; cached for the last t.
   const Vector7& evaluate(double t) const;
+  /// Sets the phasors to e^{i w_j t}.
+  void update_phasors(double t) const;
 
   std::string name_;
   int link_;
@@ -48,7 +57,13 @@ class WaveExcitation : public ForceElement {
   Eigen::Vector2d mean_position_;
   Eigen::VectorXd angular_frequencies_;                 // w_j [rad/s]
   Eigen::Matrix<double, 7, Eigen::Dynamic> cosine_weights_, sine_weights_;  // W_c, W_s: N/m, N m/m; row 6: m
-  mutable Eigen::VectorXd cosines_, sines_;             // c_j, s_j at the cached time
+  mutable Eigen::VectorXd cosines_, sines_;             // e^{i w_j tau}: cos, sin
+  mutable Eigen::VectorXd rotation_cosines_, rotation_sines_;  // e^{i w_j delta} for the kept step delta
+  mutable Eigen::VectorXd scratch_;
+  mutable double phasor_time_ = std::numeric_limits<double>::quiet_NaN();    // tau [s]
+  mutable double rotation_step_ = std::numeric_limits<double>::quiet_NaN();  // delta [s]
+  mutable double previous_step_ = std::numeric_limits<double>::quiet_NaN();  // t - tau at the last direct evaluation [s]
+  mutable int rotations_since_direct_ = 0;
   mutable double cached_time_ = std::numeric_limits<double>::quiet_NaN();
   mutable Vector7 cached_value_ = Vector7::Zero();
   std::vector<ElementChannel> channels_;
