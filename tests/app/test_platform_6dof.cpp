@@ -115,15 +115,6 @@ TEST(Platform6Dof, StillWaterStaysAtTheReferencePose) {
   RecordProperty("largest_displacement", std::to_string(largest));
 }
 
-/// Mean period [s] from the zero crossings of x (linear interpolation).
-double crossing_period(const std::vector<double>& time, const std::vector<double>& x) {
-  std::vector<double> crossings;
-  for (std::size_t k = 1; k < x.size(); ++k)
-    if ((x[k - 1] > 0) != (x[k] > 0)) crossings.push_back(time[k - 1] - x[k - 1] * (time[k] - time[k - 1]) / (x[k] - x[k - 1]));
-  if (crossings.size() < 3) return 0.0;
-  return 2.0 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
-}
-
 /// The undamped eigenperiod nearest `guess` [s] of (C + K) x = w^2 (M + A(w)) x, A(w)
 /// re-evaluated at each iterate until the period settles.
 double eigenperiod(const Matrix6& stiffness, const Matrix6& mass, double guess) {
@@ -174,7 +165,7 @@ TEST(Platform6Dof, RollAndPitchDecayPeriodsMatchTheBemEigenperiods) {
       time_window.push_back(record.time[k]);
       angle_window.push_back(angle[k]);
     }
-    const double measured = crossing_period(time_window, angle_window);
+    const double measured = validation::crossing_period(time_window, angle_window);
     std::printf("%s decay: measured T = %.3f s, coupled eigenperiod %.3f s (error %.3f %%), single-mode "
                 "2 pi sqrt((I + A(w_n))/C) = %.3f s\n",
                 mode == 3 ? "roll" : "pitch", measured, reference, 100 * (measured / reference - 1), uncoupled);
