@@ -44,11 +44,11 @@ const hydro::BemData& semisub() {
 }
 
 /// The 6x6 mass matrix about the reference point, WAMIT order, as semisub.frc gives it
-/// (lines 5-10).
+/// (lines 6-11, after the title, the option flags, rho, the CG and a 1).
 Matrix6 frc_mass_matrix() {
   std::ifstream in(testing::source_path("data/mss_semisub/semisub.frc"));
   std::string line;
-  for (int skip = 0; skip < 4; ++skip) std::getline(in, line);
+  for (int skip = 0; skip < 5; ++skip) std::getline(in, line);
   Matrix6 M;
   for (int i = 0; i < 6; ++i) {
     std::getline(in, line);
@@ -136,9 +136,12 @@ double eigenperiod(const Matrix6& stiffness, const Matrix6& mass, double guess) 
 
 // Roll (mode 4) and pitch (mode 5) decay from 2 deg, no viscous damping: the period of
 // 4 cycles against the coupled eigenperiod (roll-sway and pitch-surge couple through
-// m z_G and A24, A15). Bar 1 %: the run's added mass at w_n comes from A(inf) plus the
-// state-space memory realised from a 60 s kernel, which reproduces A(w) - A(inf) to
-// about 1 % of A(w) near these periods; the period goes with its square root.
+// m z_G and A24, A15; the single-mode formula is 2 % long for roll). Bar 0.5 %: the
+// run's added mass at w_n comes from A(inf) plus the state-space memory realised from a
+// 60 s kernel, which reproduces A(w) - A(inf) to about 1 % of A(w) near these periods,
+// and the period goes with its square root. Measured (2026-11-23): roll -0.002 %, pitch
+// +0.15 %. Counting the gravity part of semisub.hst twice (hst_includes_gravity: false)
+// gives a roll period of 39.70 s, -4.2 %.
 TEST(Platform6Dof, RollAndPitchDecayPeriodsMatchTheBemEigenperiods) {
   const Matrix6 mass = frc_mass_matrix();
   ASSERT_NEAR(mass(0, 0), 51979800.0, 1.0);
@@ -169,7 +172,7 @@ TEST(Platform6Dof, RollAndPitchDecayPeriodsMatchTheBemEigenperiods) {
     std::printf("%s decay: measured T = %.3f s, coupled eigenperiod %.3f s (error %.3f %%), single-mode "
                 "2 pi sqrt((I + A(w_n))/C) = %.3f s\n",
                 mode == 3 ? "roll" : "pitch", measured, reference, 100 * (measured / reference - 1), uncoupled);
-    EXPECT_NEAR(measured / reference, 1.0, 0.01) << file;
+    EXPECT_NEAR(measured / reference, 1.0, 0.005) << file;
     RecordProperty(mode == 3 ? "roll_period_error" : "pitch_period_error", std::to_string(measured / reference - 1));
   }
 }
@@ -180,11 +183,12 @@ TEST(Platform6Dof, RollAndPitchDecayPeriodsMatchTheBemEigenperiods) {
 // e^-(0.05 * 0.063 * 700) = 0.11 and sits far below the wave frequency, and the fit
 // carries a constant term) fitted per mode against X above. Bars: modes whose RAO is at
 // least 10 % of the largest of its kind (translations in m/m, rotations in rad/m against
-// 1/20 rad/m) must agree to 5 % in amplitude and 3 deg in phase. What is not the same on
+// 1/20 rad/m) must agree to 3 % in amplitude and 3 deg in phase. What is not the same on
 // both sides: the run's radiation is A(inf) + a 12-state realisation of a 60 s K(t),
-// whose transfer function departs from WAMIT's A(w), B(w) by up to a few % of
+// whose transfer function departs from WAMIT's A(w), B(w) by up to about 1 % of
 // w^2 A(w) at these periods; the run is nonlinear in the rotations (second order at
-// these amplitudes, < 1e-3).
+// these amplitudes, < 1e-3). Measured (2026-11-23): at most 1.3 % (surge, 8 s, 150 deg)
+// and 2.1 deg (pitch, 8 s, head seas, where its RAO is small and crosses over).
 TEST(Platform6Dof, RegularWaveMotionsMatchTheFrequencyDomainRao) {
   const hydro::BemData& bem = semisub();
   const Matrix6 mass = frc_mass_matrix();
@@ -228,7 +232,7 @@ TEST(Platform6Dof, RegularWaveMotionsMatchTheFrequencyDomainRao) {
                     heading_degrees, period, mode + 1, std::abs(measured), std::abs(rao[mode]), 100 * amplitude_error,
                     phase_error, std::abs(rao[mode]) >= 0.1 * scale ? "" : "  (small, not checked)");
         if (std::abs(rao[mode]) < 0.1 * scale) continue;
-        EXPECT_LT(amplitude_error, 0.05) << "beta " << heading_degrees << " T " << period << " mode " << mode + 1;
+        EXPECT_LT(amplitude_error, 0.03) << "beta " << heading_degrees << " T " << period << " mode " << mode + 1;
         EXPECT_LT(phase_error, 3.0) << "beta " << heading_degrees << " T " << period << " mode " << mode + 1;
         worst_amplitude = std::max(worst_amplitude, amplitude_error);
         worst_phase = std::max(worst_phase, phase_error);
