@@ -32,7 +32,7 @@ struct SolverSettings {
 
 /// A force element declared in `forces:`.
 struct ForceDefinition {
-  enum class Type { spring_damper, point_force };
+  enum class Type { spring_damper, point_force, ground_contact };
   std::string name;
   Type type = Type::spring_damper;
   std::string body_a, body_b;         // spring_damper ends; point_force: body_a
@@ -40,6 +40,10 @@ struct ForceDefinition {
   Vector3 point_b = Vector3::Zero();  // m, body b's frame
   SpringDamperParameters spring;
   Vector3 force_world = Vector3::Zero();  // N, point_force
+  /// ground_contact: the contact force [N] at the initial state; the surface is placed
+  /// preload / stiffness below the point's initial position (spring.stiffness,
+  /// spring.damping are k_f, c_f).
+  double preload = 0.0;
 };
 
 struct OutputSettings {

@@ -419,7 +419,8 @@ void check_driver_derivatives(const CaseDefinition& definition, const Expression
 void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& item : section.items()) {
     const std::string type =
-        item["type"].choice({"spring_damper", "point_force", "pneumatic_compensator", "active_compensator",
+        item["type"].choice({"spring_damper", "point_force", "ground_contact", "pneumatic_compensator",
+                             "active_compensator", "added_mass",
                              "hydrostatics", "radiation", "wave_excitation", "linear_damping", "quadratic_damping",
                              "mooring"});
     if (is_hydro_force_type(type)) {
@@ -431,9 +432,19 @@ void read_forces(const NodeReader& section, CaseDefinition& definition, std::set
       continue;
     }
     ForceDefinition def;
-    def.type = type == "spring_damper" ? ForceDefinition::Type::spring_damper : ForceDefinition::Type::point_force;
+    def.type = type == "spring_damper"    ? ForceDefinition::Type::spring_damper
+               : type == "ground_contact" ? ForceDefinition::Type::ground_contact
+                                          : ForceDefinition::Type::point_force;
     def.name = read_unique_name(item, names);
-    if (def.type == ForceDefinition::Type::spring_damper) {
+    if (def.type == ForceDefinition::Type::ground_contact) {
+      // A unilateral spring-damper on an earth-fixed horizontal surface (the bit on the
+      // formation, offshore-model.md sec. 3.6), preloaded at the initial state.
+      item.expect_map({"name", "type", "body", "point", "stiffness", "damping", "preload", "description"});
+      def.body_a = item["body"].text();
+      def.spring.stiffness = item["stiffness"].positive_number();
+      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
+      def.preload = item.optional("preload") ? item["preload"].non_negative_number() : 0.0;
+    } else if (def.type == ForceDefinition::Type::spring_damper) {
       item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "stiffness", "damping",
                        "rest_length", "description"});
       def.body_a = item["body_a"].text();

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hydro/elements/body_motion.hpp"
+#include "hydro/excitation/semisubmersible_heave.hpp"
 #include "hydro/waves/ramp.hpp"
 #include "hydro/waves/wave_train.hpp"
 
@@ -41,13 +42,15 @@ struct WaveDefinition {
 /// One hydrodynamic force element in `forces:` on one body's reference point (its body
 /// frame origin, WAMIT order [surge, sway, heave, roll, pitch, yaw], world axes).
 struct HydroForceDefinition {
-  enum class Type { hydrostatics, radiation, wave_excitation, linear_damping, quadratic_damping, mooring };
+  enum class Type { hydrostatics, radiation, wave_excitation, linear_damping, quadratic_damping, mooring, added_mass };
   std::string name;
   Type type = Type::hydrostatics;
   std::string body;
   std::string file;          // hst / .1 / .3 / mesh path, resolved against the case file's directory
   std::string file_key;      // the key the file came from ("hst", "mesh", "file"), for errors
   bool nonlinear = false;    // hydrostatics from a panel mesh (.gdf, .stl), clipped every evaluation
+  /// wave_excitation from the semi-submersible hand estimate instead of a .3 file.
+  std::optional<hydro::SemisubmersibleHeaveEstimate> heave_estimate;
   double length_scale = 1.0;  // WAMIT ULEN [m]
   /// Linear hydrostatics: buoyancy rho g V at the reference pose; when absent, equal to the
   /// body's weight (the reference pose is then the static equilibrium).
@@ -66,7 +69,8 @@ struct HydroForceDefinition {
   /// WAMIT modes (0-based) whose memory is realised: pairs (i, j) with both in the set.
   /// All six by default; a body held to fewer degrees of freedom needs only those.
   std::array<bool, 6> modes = {true, true, true, true, true, true};
-  // linear_damping: B [N s/m ...]; mooring: K [N/m ...]; WAMIT order, world axes
+  // linear_damping: B [N s/m ...]; mooring, hydrostatics given as `stiffness`: K [N/m ...];
+  // added_mass: A [kg, kg m^2] about the reference point; WAMIT order, world axes
   hydro::Matrix6 matrix = hydro::Matrix6::Zero();
   // quadratic_damping: b_quad [N s^2/m^2, N m s^2/rad^2]; mooring: pretension f0 [N, N m]
   hydro::Vector6 vector = hydro::Vector6::Zero();

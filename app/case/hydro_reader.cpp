@@ -76,7 +76,7 @@ void check_symmetric_positive(const NodeReader& reader, const hydro::Matrix6& ma
 
 bool is_hydro_force_type(const std::string& type) {
   return type == "hydrostatics" || type == "radiation" || type == "wave_excitation" || type == "linear_damping" ||
-         type == "quadratic_damping" || type == "mooring";
+         type == "quadratic_damping" || type == "mooring" || type == "added_mass";
 }
 
 void read_waves(const NodeReader& reader, CaseDefinition& definition) {
@@ -138,12 +138,21 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
   def.name = name;
   std::map<std::string, SourceLocation> fields{{"name", item["name"].location()}};
   if (type == "hydrostatics") {
-    item.expect_map({"name", "type", "body", "hst", "mesh", "displaced_volume", "hst_includes_gravity", "length_scale",
+    item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "hst_includes_gravity",
+                     "length_scale",
                      "description"});
     def.type = HydroForceDefinition::Type::hydrostatics;
-    if (item.has("hst") == item.has("mesh"))
-      item.fail("exactly one of 'hst' (linear, a WAMIT .hst file) and 'mesh' (nonlinear, a .gdf or .stl hull)");
-    def.file_key = item.has("hst") ? "hst" : "mesh";
+    if (item.has("hst") + item.has("mesh") + item.has("stiffness") != 1)
+      item.fail("exactly one of 'hst' (linear, a WAMIT .hst file), 'stiffness' (linear, a 6 x 6 matrix) and 'mesh' "
+                "(nonlinear, a .gdf or .stl hull)");
+    if (item.has("stiffness")) {
+      // Linear hydrostatics given directly (e.g. from the hull's A_wp, V and waterplane
+      // inertias): the buoyancy's restoring only; gravity acts on the bodies' masses.
+      def.matrix = read_matrix6(item["stiffness"]);
+      check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
+    } else {
+      def.file_key = item.has("hst") ? "hst" : "mesh";
+    }
     def.nonlinear = def.file_key == "mesh";
     if (auto volume = item.optional("displaced_volume")) {
       if (def.nonlinear)
@@ -151,7 +160,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       def.displaced_volume = volume->positive_number();
     }
     if (auto gravity = item.optional("hst_includes_gravity")) {
-      if (def.nonlinear) gravity->fail("'hst_includes_gravity' with a mesh", "no 'hst_includes_gravity' (only for 'hst')");
+      if (!item.has("hst"))
+        gravity->fail("'hst_includes_gravity' without 'hst'", "no 'hst_includes_gravity' (it says what a WAMIT .hst holds)");
       def.hst_includes_gravity = gravity->boolean();
     }
   } else if (type == "radiation") {
@@ -182,9 +192,32 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       }
     }
   } else if (type == "wave_excitation") {
-    item.expect_map({"name", "type", "body", "file", "length_scale", "description"});
+    item.expect_map({"name", "type", "body", "file", "heave_estimate", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::wave_excitation;
-    def.file_key = "file";
+    if (item.has("file") == item.has("heave_estimate"))
+      item.fail("exactly one of 'file' (a WAMIT .3 file) and 'heave_estimate' (the semi-submersible hand estimate)");
+    if (auto estimate = item.optional("heave_estimate")) {
+      estimate->expect_map({"pontoon_bottom_area", "waterplane_area", "keel_depth", "pontoon_top_depth",
+                            "added_mass", "added_mass_depth"});
+      hydro::SemisubmersibleHeaveEstimate e;
+      e.pontoon_bottom_area = (*estimate)["pontoon_bottom_area"].positive_number();
+      e.waterplane_area = (*estimate)["waterplane_area"].positive_number();
+      e.keel_depth = (*estimate)["keel_depth"].positive_number();
+      e.pontoon_top_depth = (*estimate)["pontoon_top_depth"].positive_number();
+      e.added_mass = (*estimate)["added_mass"].non_negative_number();
+      e.added_mass_depth = (*estimate)["added_mass_depth"].positive_number();
+      if (!(e.pontoon_top_depth < e.keel_depth))
+        (*estimate)["pontoon_top_depth"].fail(
+            fmt::format("{:g} m, not above the keel at {:g} m", e.pontoon_top_depth, e.keel_depth),
+            "pontoon_top_depth < keel_depth (both depths below the still-water level)");
+      if (!(e.waterplane_area <= e.pontoon_bottom_area))
+        (*estimate)["waterplane_area"].fail(
+            fmt::format("{:g} m^2, more than the pontoon bottoms' {:g} m^2", e.waterplane_area, e.pontoon_bottom_area),
+            "waterplane_area <= pontoon_bottom_area (the columns stand on the pontoons)");
+      def.heave_estimate = e;
+    } else {
+      def.file_key = "file";
+    }
     if (!definition.waves.declared())
       item["type"].fail("wave_excitation without a sea", "a top-level 'waves:' block (declared before use)");
   } else if (type == "linear_damping") {
@@ -197,6 +230,13 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     def.type = HydroForceDefinition::Type::quadratic_damping;
     def.vector = read_vector6(item["coefficients"]);
     if ((def.vector.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+  } else if (type == "added_mass") {
+    // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
+    // body's inertia like a radiation element's A(inf); no force of its own.
+    item.expect_map({"name", "type", "body", "matrix", "description"});
+    def.type = HydroForceDefinition::Type::added_mass;
+    def.matrix = read_matrix6(item["matrix"]);
+    check_symmetric_positive(item["matrix"], def.matrix, "mass");
   } else {
     item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
     def.type = HydroForceDefinition::Type::mooring;

@@ -15,6 +15,7 @@ CompensatorSummary::CompensatorSummary(const MultibodySystem& system, double eva
       passive_.push_back({pneumatic, system.state_offset(e), EndStopMonitor(pneumatic->parameters().end_stops)});
     if (auto* active = dynamic_cast<const ActiveCompensator*>(elements[e].get()))
       active_.push_back({active, system.state_offset(e)});
+    if (auto* contact = dynamic_cast<const GroundContact*>(elements[e].get())) contacts_.push_back({contact});
   }
 }
 
@@ -40,6 +41,12 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
       p.load_height.add(&load_height);
     }
   }
+  if (t >= evaluate_after_ - 1e-9)
+    for (Contact& c : contacts_) {
+      const double force = c.element->state(data).force;
+      c.force.add(&force);
+      c.lifted_samples += force <= 0.0;
+    }
   for (Active& a : active_) {
     const ActiveState s = a.element->evaluate(t, model, data, y.segment(a.offset, a.element->state_size()), nullptr);
     a.max_force = std::max(a.max_force, std::abs(s.force));
@@ -87,6 +94,15 @@ void CompensatorSummary::write(ResultFile& file) const {
       file.set_attribute("/summary", prefix + "supply_energy_J", a.supply_energy);
     }
   }
+  for (const Contact& c : contacts_) {
+    if (c.force.count() == 0) continue;
+    const std::string prefix = c.element->name() + "_";
+    file.set_attribute("/summary", prefix + "force_mean_N", c.force.mean()[0]);
+    file.set_attribute("/summary", prefix + "force_std_N", c.force.standard_deviation()[0]);
+    file.set_attribute("/summary", prefix + "force_min_N", c.force.minimum()[0]);
+    file.set_attribute("/summary", prefix + "force_max_N", c.force.maximum()[0]);
+    file.set_attribute("/summary", prefix + "lifted_samples", c.lifted_samples);
+  }
 }
 
 std::vector<std::string> CompensatorSummary::headlines() const {
@@ -113,6 +129,13 @@ std::vector<std::string> CompensatorSummary::headlines() const {
                           a.supply_energy / (a.last_time - a.first_time) * 1e-3);
     lines.push_back(line);
   }
+  for (const Contact& c : contacts_)
+    if (c.force.count() > 0)
+      lines.push_back(fmt::format("contact '{}': force mean {:.4g} kN, std {:.4g} kN, range {:.4g} .. {:.4g} kN "
+                                  "(from t = {:g} s), {} of {} samples lifted off",
+                                  c.element->name(), c.force.mean()[0] * 1e-3, c.force.standard_deviation()[0] * 1e-3,
+                                  c.force.minimum()[0] * 1e-3, c.force.maximum()[0] * 1e-3, evaluate_after_,
+                                  c.lifted_samples, c.force.count()));
   return lines;
 }
 

@@ -9,6 +9,8 @@
 // block, rigidly carrying the string on H0), sigma the standard deviation over the
 // window's samples. For a steady sinusoid sigma ratio = amplitude ratio, so this is the
 // regular-wave definition of offshore-model.md sec. 5.2 too (eta = 1 - Z_ds / Z_dt).
+// Ground contacts (the bit on the formation): the contact force (WOB) over the same
+// window -- mean, standard deviation, range, and the samples off the ground.
 // Written as /summary attributes and printed by `heavesim run`.
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "app/output/running_statistics.hpp"
 #include "control/active/active_compensator.hpp"
 #include "control/pneumatic/pneumatic_compensator.hpp"
+#include "kernel/elements/ground_contact.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
@@ -51,10 +54,16 @@ class CompensatorSummary {
     double last_supply_power = 0.0;
     long samples = 0;
   };
+  struct Contact {
+    const GroundContact* element;
+    RunningStatistics force{};  // N, over the evaluation window
+    long lifted_samples = 0;    // samples in the window with no contact force
+  };
   const MultibodySystem& system_;
   double evaluate_after_;
   std::vector<Passive> passive_;
   std::vector<Active> active_;
+  std::vector<Contact> contacts_;
 };
 
 }  // namespace heavesim

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <memory>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -12,6 +13,7 @@
 #include "hydro/elements/radiation_convolution.hpp"
 #include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
+#include "hydro/excitation/semisubmersible_heave.hpp"
 #include "hydro/radiation/added_mass.hpp"
 #include "hydro/radiation/retardation_kernel.hpp"
 #include "hydro/radiation/state_space.hpp"
@@ -59,18 +61,33 @@ double body_mass(const CaseDefinition& definition, const std::string& body) {
 
 HydroData read_hydro_data(const CaseDefinition& definition) {
   HydroData data;
+  std::set<std::string> radiating_bodies;
+  auto add_inertia = [&](const std::string& body, const Matrix6& added) {
+    data.added_inertia.try_emplace(body, Matrix6::Zero()).first->second += added;  // several elements add up
+  };
   for (const HydroForceDefinition& force : definition.hydro_forces) {
     const hydro::WamitScaling s = scaling(definition, force);
     using Type = HydroForceDefinition::Type;
-    if (force.type == Type::radiation) {
-      if (data.added_inertia.count(force.body))
+    if (force.type == Type::added_mass) {
+      add_inertia(force.body, hydro::added_inertia_in_body_frame(force.matrix));
+    } else if (force.type == Type::radiation) {
+      if (!radiating_bodies.insert(force.body).second)
         throw hydro_error(definition, force.name, "body", "a second radiation element on '" + force.body + "'",
                           "one radiation element per body (its A(inf) is the body's added inertia)");
       const auto& radiation = data.radiation[force.name] =
           read_checked(definition, force, [&] { return hydro::read_wamit_1(force.file, s); });
-      data.added_inertia[force.body] = hydro::added_inertia_in_body_frame(radiation.added_mass_infinite);
+      add_inertia(force.body, hydro::added_inertia_in_body_frame(radiation.added_mass_infinite));
+    } else if (force.type == Type::wave_excitation && force.heave_estimate) {
+      // Evaluated at the sea's own component frequencies: exact, no interpolation.
+      std::vector<double> frequencies;
+      const hydro::WaveTrain waves = wave_train(definition);
+      for (const hydro::WaveComponent& c : waves.components()) frequencies.push_back(c.angular_frequency);
+      data.excitation[force.name] = hydro::semisubmersible_heave_excitation_table(
+          *force.heave_estimate, frequencies, definition.water.density, definition.gravity.norm());
     } else if (force.type == Type::wave_excitation) {
       data.excitation[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_3(force.file, s); });
+    } else if (force.type == Type::hydrostatics && force.file.empty()) {
+      data.stiffness[force.name] = force.matrix;
     } else if (force.type == Type::hydrostatics && !force.nonlinear) {
       data.stiffness[force.name] = read_checked(definition, force, [&] { return hydro::read_wamit_hst(force.file, s); });
     } else if (force.type == Type::hydrostatics) {
@@ -175,6 +192,8 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
       case Type::quadratic_damping:
         element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.vector);
         break;
+      case Type::added_mass:
+        continue;  // in the body's inertia (read_hydro_data)
       case Type::mooring:
         element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.matrix, force.vector,
                                                            Transform::Identity());

@@ -5,6 +5,8 @@
 #include "app/scene/control_scene.hpp"
 #include "app/scene/hydro_scene.hpp"
 
+#include "kernel/algorithms/kinematics.hpp"
+#include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/point_force.hpp"
 #include "kernel/elements/spring_damper.hpp"
 
@@ -30,6 +32,7 @@ BodyPoint body_point(const CaseDefinition& definition, const Model& model, const
 
 void add_force_elements(const CaseDefinition& definition, const Model& model, MultibodySystem& system) {
   for (const ForceDefinition& force : definition.forces) {
+    if (force.type == ForceDefinition::Type::ground_contact) continue;  // needs the initial state
     if (force.type == ForceDefinition::Type::point_force) {
       system.add_force_element(std::make_unique<PointForce>(
           force.name, body_point(definition, model, force, "body", force.body_a, force.point_a), force.force_world));
@@ -41,6 +44,25 @@ void add_force_elements(const CaseDefinition& definition, const Model& model, Mu
       throw force_error(definition, force.name, "body_b", "both ends on '" + force.body_a + "'",
                         "two different bodies");
     system.add_force_element(std::make_unique<SpringDamper>(force.name, a, b, force.spring));
+  }
+}
+
+/// Ground contacts, once the initial configuration q0 is known: the surface sits
+/// preload / k below the point's initial height, so the contact starts carrying the
+/// preload (the weight on bit WOB0). Added before the compensators, whose balance
+/// pressure then counts the preload.
+void add_ground_contacts(const CaseDefinition& definition, const Model& model, MultibodySystem& system,
+                         const VectorX& q0) {
+  Data& data = system.mutable_data();
+  update_positions(model, data, q0);
+  for (const ForceDefinition& force : definition.forces) {
+    if (force.type != ForceDefinition::Type::ground_contact) continue;
+    const BodyPoint point = body_point(definition, model, force, "body", force.body_a, force.point_a);
+    if (point.link == 0)
+      throw force_error(definition, force.name, "body", "'ground'", "the name of the body that touches the ground");
+    GroundContactParameters parameters{force.spring.stiffness, force.spring.damping, 0.0};
+    parameters.surface_height = point.position_world(data).z() + force.preload / force.spring.stiffness;
+    system.add_force_element(std::make_unique<GroundContact>(force.name, point, parameters));
   }
 }
 
@@ -125,6 +147,7 @@ Scene build_scene(const CaseDefinition& definition) {
     v0[joint.v_index + constraint.coordinate] = start.velocity;
   }
   if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
+  add_ground_contacts(definition, model, *scene.system, q0);
   add_compensators(definition, model, *scene.system, definition.solver.t_start, q0);
   scene.initial_state = scene.system->initial_state(q0, v0);
   return scene;

@@ -1,5 +1,5 @@
 #pragma once
-// Forced in front of every source of the no-malloc test build (-include): makes
+// First in the precompiled header of the no-malloc test build (tests/CMakeLists.txt): makes
 // Eigen's runtime allocation check active in optimized builds and turns a violation
 // into an exception the test can see, instead of an abort.
 #include <stdexcept>

@@ -3,6 +3,7 @@
 // no_malloc_config.hpp) if anything allocates while allocation is forbidden.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <random>
 
 #include "control/active/active_compensator.hpp"
@@ -10,6 +11,7 @@
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
@@ -109,6 +111,22 @@ struct StrutFourBar {
   MultibodySystem system;
   VectorX y;
 };
+
+// The bit-on-bottom contact: its force (in contact: the surface above the point) and
+// its channels in the derivative and output path.
+TEST(NoMalloc, GroundContactDoesNotAllocate) {
+  StrutFourBar four_bar;
+  four_bar.system.add_force_element(std::make_unique<GroundContact>(
+      "bit", BodyPoint{1, Vector3(0.5, 0, 0)}, GroundContactParameters{5e7, 5e5, 10.0}));
+  const ForceElement& contact = *four_bar.system.force_elements().back();
+  VectorX y = four_bar.system.initial_state(VectorX::Constant(3, 0.3).cwiseProduct(Vector3(1, -1, 1)), Vector3(1, -1, 1));
+  VectorX ydot(four_bar.system.size());
+  std::array<double, 2> values{};
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW(four_bar.system.derivative(0.0, y, ydot));
+  contact.outputs(0.0, four_bar.system.model(), four_bar.system.data(), y.tail(0), values);
+  EXPECT_GT(values[0], 0.0);
+}
 
 TEST(NoMalloc, ClosedLoopDaeResidualDoesNotAllocate) {
   StrutFourBar four_bar;
