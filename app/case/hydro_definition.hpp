@@ -55,8 +55,15 @@ struct HydroForceDefinition {
   /// Linear hydrostatics: buoyancy rho g V at the reference pose; when absent, equal to the
   /// body's weight (the reference pose is then the static equilibrium).
   std::optional<double> displaced_volume;  // V [m^3]
+  /// Linear hydrostatics: the .hst is WAMIT's "hydrostatic and gravitational" matrix of a
+  /// run given the CG (MSS semisub.hst); its gravitational part is taken out because the
+  /// kernel applies the weight at the centre of mass itself (hydro-reference.md sec. 2.2).
+  bool hst_includes_gravity = false;
   // radiation
   int state_space_order = 12;     // states per realised mode pair
+  /// The memory as a direct convolution of the sampled K(t) (RadiationConvolution; for
+  /// fixed-step explicit runs whose step divides kernel_step) instead of the state space.
+  bool convolution = false;
   double kernel_duration = 60.0;  // s, length of the retardation kernel K(t)
   double kernel_step = 0.05;      // s, its sample step
   /// WAMIT modes (0-based) whose memory is realised: pairs (i, j) with both in the set.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "app/bem/bem_file.hpp"
+#include "hydro/radiation/state_space.hpp"
 
 namespace heavesim {
 namespace {
@@ -138,7 +139,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
   def.name = name;
   std::map<std::string, SourceLocation> fields{{"name", item["name"].location()}};
   if (type == "hydrostatics") {
-    item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "length_scale",
+    item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "hst_includes_gravity",
+                     "length_scale",
                      "description"});
     def.type = HydroForceDefinition::Type::hydrostatics;
     if (item.has("hst") + item.has("mesh") + item.has("stiffness") != 1)
@@ -158,14 +160,21 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
         volume->fail("'displaced_volume' with a mesh", "no 'displaced_volume' (the mesh gives the volume)");
       def.displaced_volume = volume->positive_number();
     }
+    if (auto gravity = item.optional("hst_includes_gravity")) {
+      if (!item.has("hst"))
+        gravity->fail("'hst_includes_gravity' without 'hst'", "no 'hst_includes_gravity' (it says what a WAMIT .hst holds)");
+      def.hst_includes_gravity = gravity->boolean();
+    }
   } else if (type == "radiation") {
-    item.expect_map({"name", "type", "body", "file", "state_space_order", "kernel_duration", "kernel_step",
+    item.expect_map({"name", "type", "body", "file", "memory", "state_space_order", "kernel_duration", "kernel_step",
                      "modes", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
+    if (auto memory = item.optional("memory")) def.convolution = memory->choice({"state_space", "convolution"}) == "convolution";
     if (auto order = item.optional("state_space_order")) {
       const long n = order->integer();
-      if (n < 2 || n > 40) order->fail(fmt::format("{}", n), "a state-space order in 2 .. 40");
+      if (n < 2 || n > hydro::max_state_space_order)
+        order->fail(fmt::format("{}", n), fmt::format("a state-space order in 2 .. {}", hydro::max_state_space_order));
       def.state_space_order = static_cast<int>(n);
     }
     if (auto duration = item.optional("kernel_duration")) def.kernel_duration = duration->positive_number();

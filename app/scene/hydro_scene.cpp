@@ -10,6 +10,7 @@
 #include "app/scene/recorded_load.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
+#include "hydro/elements/radiation_convolution.hpp"
 #include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
 #include "hydro/excitation/semisubmersible_heave.hpp"
@@ -46,10 +47,15 @@ hydro::WamitScaling scaling(const CaseDefinition& definition, const HydroForceDe
   return {definition.water.density, definition.gravity.norm(), force.length_scale};
 }
 
-double body_mass(const CaseDefinition& definition, const std::string& body) {
+const BodyDefinition* find_body(const CaseDefinition& definition, const std::string& body) {
   for (const BodyDefinition& b : definition.bodies)
-    if (b.name == body) return b.inertia.mass();
-  return 0.0;
+    if (b.name == body) return &b;
+  return nullptr;
+}
+
+double body_mass(const CaseDefinition& definition, const std::string& body) {
+  const BodyDefinition* b = find_body(definition, body);
+  return b ? b->inertia.mass() : 0.0;
 }
 
 }  // namespace
@@ -136,14 +142,26 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
           // body's weight so that the reference pose (the world frame) is the equilibrium.
           hydro::Vector6 buoyancy = hydro::Vector6::Zero();
           buoyancy[2] = force.displaced_volume ? rho * g * *force.displaced_volume : body_mass(definition, force.body) * g;
-          element = std::make_unique<hydro::LinearRestoring>(force.name, link, data.stiffness.at(force.name), buoyancy,
-                                                             Transform::Identity());
+          hydro::Matrix6 stiffness = data.stiffness.at(force.name);
+          if (force.hst_includes_gravity)  // the kernel's weight at the CoM provides this part
+            if (const BodyDefinition* body = find_body(definition, force.body))
+              stiffness -= hydro::wamit_gravitational_stiffness(body->inertia.mass(), body->inertia.com(), g);
+          element = std::make_unique<hydro::LinearRestoring>(force.name, link, stiffness, buoyancy, Transform::Identity());
         }
         break;
       case Type::radiation: {
         const hydro::RadiationData& radiation = data.radiation.at(force.name);
-        const hydro::RetardationKernel kernel =
+        hydro::RetardationKernel kernel =
             hydro::retardation_kernel(radiation, force.kernel_duration, force.kernel_step);
+        if (force.convolution) {
+          // Only the pairs of the modes asked for (a body held to fewer degrees of freedom).
+          for (hydro::Matrix6& K : kernel.values)
+            for (int i = 0; i < 6; ++i)
+              for (int j = 0; j < 6; ++j)
+                if (!force.modes[i] || !force.modes[j]) K(i, j) = 0.0;
+          element = std::make_unique<hydro::RadiationConvolution>(force.name, link, std::move(kernel));
+          break;
+        }
         // Pair (i, j) is realised when both modes are asked for and its kernel is not
         // negligible against its own diagonal: max|K_ij| > 1e-3 sqrt(max|K_ii| max|K_jj|)
         // (dimensionally consistent, unlike a comparison across translation and rotation).

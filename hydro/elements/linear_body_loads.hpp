@@ -3,7 +3,10 @@
 // WAMIT order [surge, sway, heave, roll, pitch, yaw], world axes (body_motion.hpp):
 //  * LinearRestoring: F = f0 - K xi, xi the small displacement from the reference pose
 //    (linear hydrostatics with K = C and f0 = rho g V e_z; a linear mooring spring with
-//    K the mooring stiffness and f0 the pretension);
+//    K the mooring stiffness and f0 the pretension). xi = [translation of the body
+//    origin; rotation vector of R_world_body R_reference^T], world axes (body_motion.hpp):
+//    for small rotations its angular part is [roll, pitch, yaw]; f0 is a constant world
+//    vector, applied at the instantaneous body origin like K xi;
 //  * BodyDamping: F = -B_lin v - diag(b_quad) v .* |v| (viscous hull damping, WEC-Sim's
 //    linearDamping and quadDrag, hydro-reference.md sec. 1.1).
 // Units: K in N/m, N, N m/rad blocks; B_lin in N s/m, N s, N m s/rad; b_quad in
@@ -11,6 +14,21 @@
 #include "hydro/elements/body_motion.hpp"
 
 namespace heavesim::hydro {
+
+/// The gravitational part of WAMIT's "hydrostatic and gravitational" restoring matrix
+/// (WAMIT User Manual v7, sec. 3.1): C44 = C55 = -m g z_G, C46 = m g x_G, C56 = m g y_G
+/// [N m/rad], with the CG (x_G, y_G, z_G) [m] in the body frame (origin at the BEM
+/// reference point). A .hst from a run given the CG includes it; the kernel applies the
+/// weight m g at the CoM itself (exactly, for any rotation), so a LinearRestoring built
+/// from such a .hst must use C - this (hydro-reference.md sec. 2.2: no double count).
+inline Matrix6 wamit_gravitational_stiffness(double mass, const Vector3& center_of_mass, double gravity) {
+  Matrix6 C = Matrix6::Zero();
+  const double weight = mass * gravity;
+  C(3, 3) = C(4, 4) = -weight * center_of_mass.z();
+  C(3, 5) = weight * center_of_mass.x();
+  C(4, 5) = weight * center_of_mass.y();
+  return C;
+}
 
 class LinearRestoring : public ForceElement {
  public:

@@ -11,6 +11,7 @@
 
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
+#include "validation/checks/harmonic_fit.hpp"
 
 namespace heavesim {
 namespace {
@@ -38,19 +39,13 @@ std::vector<std::vector<double>> numeric_rows(const std::string& path) {
   return rows;
 }
 
-/// Mean period [s] from upward and downward zero crossings of x (linear interpolation).
-double crossing_period(const std::vector<double>& time, const std::vector<double>& x) {
-  std::vector<double> crossings;
-  for (std::size_t k = 1; k < x.size(); ++k)
-    if ((x[k - 1] > 0) != (x[k] > 0)) crossings.push_back(time[k - 1] - x[k - 1] * (time[k] - time[k - 1]) / (x[k] - x[k - 1]));
-  if (crossings.size() < 3) return 0.0;
-  return 2.0 * (crossings.back() - crossings.front()) / (crossings.size() - 1);
-}
-
 TEST(HydroCases, EveryHydroCaseChecks) {
   for (const char* file : {"cases/hydro/heave_decay.yaml", "cases/hydro/regular_wave.yaml",
                            "cases/hydro/irregular_sea.yaml", "cases/hydro/heave_decay_nonlinear.yaml",
-                           "cases/hydro/heave_decay_bemio.yaml", "cases/hydro/heave_decay_capytaine.yaml"}) {
+                           "cases/hydro/heave_decay_bemio.yaml", "cases/hydro/heave_decay_capytaine.yaml",
+                           "cases/hydro/semisub_6dof_roll_decay.yaml",
+                           "cases/hydro/semisub_6dof_pitch_decay.yaml", "cases/hydro/semisub_6dof_regular_wave.yaml",
+                           "cases/hydro/semisub_6dof_irregular_sea.yaml"}) {
     const testing::CommandResult result =
         testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
@@ -90,7 +85,7 @@ TEST(HydroCases, HeaveDecayPeriodMatchesMassAddedMassAndStiffnessFromTheFiles) {
   const std::vector<double> time = file.read("/time"), heave = file.read("/joints/heave/q");
   ASSERT_EQ(time.size(), heave.size());
   EXPECT_NEAR(heave.front(), 1.0, 1e-12);
-  const double measured = crossing_period(time, heave);
+  const double measured = validation::crossing_period(time, heave);
   std::printf("heave decay: measured T = %.4f s, reference 2 pi sqrt((m + A33(w_n))/C33) = %.4f s (A33(inf): %.4f s)\n",
               measured, period, 2 * M_PI * std::sqrt((mass + rho * 5.784468e4) / c33));
   EXPECT_NEAR(measured / period, 1.0, 0.005);

@@ -23,4 +23,15 @@ inline std::complex<double> fit_harmonic(const std::vector<double>& times, const
   return {c[0], -c[1]};
 }
 
+/// Mean period [s] of an oscillating record from its zero crossings (linearly
+/// interpolated between samples): twice the mean spacing of the crossings; 0 with fewer
+/// than three crossings. Used for free-decay periods (hydro cases).
+inline double crossing_period(const std::vector<double>& times, const std::vector<double>& x) {
+  std::vector<double> crossings;
+  for (std::size_t k = 1; k < x.size(); ++k)
+    if ((x[k - 1] > 0) != (x[k] > 0)) crossings.push_back(times[k - 1] - x[k - 1] * (times[k] - times[k - 1]) / (x[k] - x[k - 1]));
+  if (crossings.size() < 3) return 0.0;
+  return 2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
 }  // namespace heavesim::validation

@@ -1,0 +1,247 @@
+// The MSS semi free in six degrees of freedom (cases/hydro/semisub_6dof*.yaml) through
+// the application path (case file -> scene -> integrator), against references solved
+// here from the WAMIT files (semisub.1/.3/.hst read with hydro/bem, the mass matrix
+// about the reference point taken from semisub.frc as WAMIT had it):
+//  * still water at the reference pose stays there (all six coordinates);
+//  * roll and pitch free decay: the period against the undamped eigenperiod of
+//    [C + K_moor - w^2 (M + A(w))] x = 0 with A(w) interpolated in the BEM data;
+//  * regular waves: the steady amplitudes and phases of all six motions (least-squares
+//    fit) against the frequency-domain RAO
+//      X = [-w^2 (M + A(w)) + i w (B(w) + B_visc) + C + K_moor]^-1 F(w, beta).
+// C is semisub.hst as WAMIT wrote it (hydrostatic *and gravitational*, CG given): the
+// run takes the gravity part out and lets the kernel apply the weight at the CoM, so a
+// double count or a missing term shows here as a roll/pitch period or RAO error.
+// Motions: xi = [position of the body origin (m); rotation vector of the body (rad)],
+// world axes (small rotations: roll, pitch, yaw).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include "app/run/simulation_run.hpp"
+#include "app/scene/scene.hpp"
+#include "hydro/bem/wamit_reader.hpp"
+#include "tests/test_support.hpp"
+#include "validation/checks/harmonic_fit.hpp"
+
+namespace heavesim {
+namespace {
+
+using hydro::Matrix6;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using ComplexMatrix6 = Eigen::Matrix<std::complex<double>, 6, 6>;
+constexpr double rho = 1025.0, g = 9.81;
+
+const hydro::BemData& semisub() {
+  static const hydro::BemData bem = hydro::read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
+  return bem;
+}
+
+/// The 6x6 mass matrix about the reference point, WAMIT order, as semisub.frc gives it
+/// (lines 6-11, after the title, the option flags, rho, the CG and a 1).
+Matrix6 frc_mass_matrix() {
+  std::ifstream in(testing::source_path("data/mss_semisub/semisub.frc"));
+  std::string line;
+  for (int skip = 0; skip < 5; ++skip) std::getline(in, line);
+  Matrix6 M;
+  for (int i = 0; i < 6; ++i) {
+    std::getline(in, line);
+    std::istringstream row(line);
+    for (int j = 0; j < 6; ++j) row >> M(i, j);
+  }
+  return M;
+}
+
+/// The matrix of a hydro element of the loaded case (mooring stiffness, viscous damping).
+Matrix6 case_matrix(const CaseDefinition& definition, const std::string& name) {
+  for (const HydroForceDefinition& force : definition.hydro_forces)
+    if (force.name == name) return force.matrix;
+  ADD_FAILURE() << "no force element " << name;
+  return Matrix6::Zero();
+}
+
+/// A(w) and B(w), linear in w between the BEM frequencies (held beyond them).
+std::pair<Matrix6, Matrix6> radiation_at(double w) {
+  const hydro::RadiationData& r = semisub().radiation;
+  const auto& f = r.angular_frequencies;
+  if (w <= f.front()) return {r.added_mass.front(), r.damping.front()};
+  if (w >= f.back()) return {r.added_mass.back(), r.damping.back()};
+  const std::size_t n = std::upper_bound(f.begin(), f.end(), w) - f.begin();
+  const double s = (w - f[n - 1]) / (f[n] - f[n - 1]);
+  return {(1 - s) * r.added_mass[n - 1] + s * r.added_mass[n], (1 - s) * r.damping[n - 1] + s * r.damping[n]};
+}
+
+struct Record {
+  std::vector<double> time;
+  std::vector<Vector6> xi;  // [x, y, z; rotation vector], world axes
+  double cpu_seconds = 0.0;
+};
+
+/// Runs a case file with overrides and records xi at every output time. The free
+/// joint's q is [position; quaternion w, x, y, z] of the body frame in the world.
+Record run_case(const std::string& file, const std::vector<std::string>& overrides = {}) {
+  const CaseDefinition definition = load_case(testing::source_path(file), overrides);
+  Scene scene = build_scene(definition);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  Record record;
+  run_simulation(scene, definition.solver, definition.output.interval, *integrator, [&](double t, const VectorX& y) {
+    const Eigen::AngleAxisd rotation(Eigen::Quaterniond(y[3], y[4], y[5], y[6]));
+    Vector6 xi;
+    xi << y.head<3>(), rotation.angle() * rotation.axis();
+    record.time.push_back(t);
+    record.xi.push_back(xi);
+    return true;
+  });
+  return record;
+}
+
+CaseDefinition case_definition(const std::string& file) { return load_case(testing::source_path(file)); }
+
+TEST(Platform6Dof, StillWaterStaysAtTheReferencePose) {
+  // Weight at the CoM (0.5 m below the origin), buoyancy m g at the origin, no wave:
+  // any stray force or moment (a misplaced buoyancy, a gravity term counted twice in
+  // C at a nonzero angle, a memory or mooring offset) would move the platform.
+  const Record record = run_case("cases/hydro/semisub_6dof.yaml",
+                                 {"solver.integrator=rk4", "solver.step=0.05", "solver.t_end=600", "output.interval=1"});
+  double largest = 0.0;
+  for (const Vector6& xi : record.xi) largest = std::max(largest, xi.cwiseAbs().maxCoeff());
+  EXPECT_LT(largest, 1e-9);
+  RecordProperty("largest_displacement", std::to_string(largest));
+}
+
+/// The undamped eigenperiod nearest `guess` [s] of (C + K) x = w^2 (M + A(w)) x, A(w)
+/// re-evaluated at each iterate until the period settles.
+double eigenperiod(const Matrix6& stiffness, const Matrix6& mass, double guess) {
+  double w = 2 * M_PI / guess;
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    const Matrix6 inertia = mass + radiation_at(w).first;
+    Eigen::GeneralizedSelfAdjointEigenSolver<Matrix6> solver(0.5 * (stiffness + stiffness.transpose()),
+                                                              0.5 * (inertia + inertia.transpose()));
+    double nearest = 0.0;
+    for (int k = 0; k < 6; ++k) {
+      const double candidate = std::sqrt(std::max(solver.eigenvalues()[k], 0.0));
+      if (std::abs(candidate - w) < std::abs(nearest - w)) nearest = candidate;
+    }
+    if (std::abs(nearest - w) < 1e-12 * w) break;
+    w = nearest;
+  }
+  return 2 * M_PI / w;
+}
+
+// Roll (mode 4) and pitch (mode 5) decay from 2 deg, no viscous damping: the period of
+// 4 cycles against the coupled eigenperiod (roll-sway and pitch-surge couple through
+// m z_G and A24, A15; the single-mode formula is 2 % long for roll). Bar 0.5 %: the
+// run's added mass at w_n comes from A(inf) plus the state-space memory realised from a
+// 60 s kernel, which reproduces A(w) - A(inf) to about 1 % of A(w) near these periods,
+// and the period goes with its square root. Measured (2026-11-23): roll -0.002 %, pitch
+// +0.15 %. Counting the gravity part of semisub.hst twice (hst_includes_gravity: false)
+// gives a roll period of 39.70 s, -4.2 %.
+TEST(Platform6Dof, RollAndPitchDecayPeriodsMatchTheBemEigenperiods) {
+  const Matrix6 mass = frc_mass_matrix();
+  ASSERT_NEAR(mass(0, 0), 51979800.0, 1.0);
+  ASSERT_NEAR(mass(0, 4), -25989900.0, 1.0);  // m z_G, z_G = -0.5 m
+  const CaseDefinition definition = case_definition("cases/hydro/semisub_6dof_roll_decay.yaml");
+  const Matrix6 stiffness = semisub().hydrostatic_stiffness + case_matrix(definition, "mooring");
+  for (const auto& [file, mode] : {std::pair{"cases/hydro/semisub_6dof_roll_decay.yaml", 3},
+                                   std::pair{"cases/hydro/semisub_6dof_pitch_decay.yaml", 4}}) {
+    const double uncoupled_guess = 2 * M_PI * std::sqrt((mass(mode, mode) + radiation_at(0.15).first(mode, mode)) /
+                                                        stiffness(mode, mode));
+    const double reference = eigenperiod(stiffness, mass, uncoupled_guess);
+    // The single-mode formula 2 pi sqrt((I + A(w_n)) / C), for the record.
+    double uncoupled = uncoupled_guess;
+    for (int k = 0; k < 100; ++k)
+      uncoupled = 2 * M_PI *
+                  std::sqrt((mass(mode, mode) + radiation_at(2 * M_PI / uncoupled).first(mode, mode)) / stiffness(mode, mode));
+    const Record record = run_case(file);
+    std::vector<double> angle;
+    for (const Vector6& xi : record.xi) angle.push_back(xi[mode]);
+    EXPECT_NEAR(angle.front(), 2 * M_PI / 180, 1e-12);
+    // Four full cycles from the start (the 100 s mooring modes barely move the angle).
+    std::vector<double> time_window, angle_window;
+    for (std::size_t k = 0; k < record.time.size() && record.time[k] <= 4.2 * reference; ++k) {
+      time_window.push_back(record.time[k]);
+      angle_window.push_back(angle[k]);
+    }
+    const double measured = validation::crossing_period(time_window, angle_window);
+    std::printf("%s decay: measured T = %.3f s, coupled eigenperiod %.3f s (error %.3f %%), single-mode "
+                "2 pi sqrt((I + A(w_n))/C) = %.3f s\n",
+                mode == 3 ? "roll" : "pitch", measured, reference, 100 * (measured / reference - 1), uncoupled);
+    EXPECT_NEAR(measured / reference, 1.0, 0.005) << file;
+    RecordProperty(mode == 3 ? "roll_period_error" : "pitch_period_error", std::to_string(measured / reference - 1));
+  }
+}
+
+// Regular waves, a = 1 m, at BEM periods 8, 10, 12 and 15 s, heading 150 deg (every mode
+// moves) and 180 deg (head seas: surge, heave, pitch). The last 5 wave periods of 800 s
+// (100 s ramp; the slowest transient, the 5 %-damped 100 s mooring modes, has decayed by
+// e^-(0.05 * 0.063 * 700) = 0.11 and sits far below the wave frequency, and the fit
+// carries a constant term) fitted per mode against X above. Bars: modes whose RAO is at
+// least 10 % of the largest of its kind (translations in m/m, rotations in rad/m against
+// 1/20 rad/m) must agree to 3 % in amplitude and 3 deg in phase. What is not the same on
+// both sides: the run's radiation is A(inf) + a 12-state realisation of a 60 s K(t),
+// whose transfer function departs from WAMIT's A(w), B(w) by up to about 1 % of
+// w^2 A(w) at these periods; the run is nonlinear in the rotations (second order at
+// these amplitudes, < 1e-3). Measured (2026-11-23): at most 1.3 % (surge, 8 s, 150 deg)
+// and 2.1 deg (pitch, 8 s, head seas, where its RAO is small and crosses over).
+TEST(Platform6Dof, RegularWaveMotionsMatchTheFrequencyDomainRao) {
+  const hydro::BemData& bem = semisub();
+  const Matrix6 mass = frc_mass_matrix();
+  const CaseDefinition definition = case_definition("cases/hydro/semisub_6dof_regular_wave.yaml");
+  const Matrix6 stiffness = bem.hydrostatic_stiffness + case_matrix(definition, "mooring");
+  const Matrix6 viscous = case_matrix(definition, "viscous");
+  const std::complex<double> i(0.0, 1.0);
+  double worst_amplitude = 0.0, worst_phase = 0.0;
+  for (double heading_degrees : {150.0, 180.0}) {
+    const auto& headings = bem.excitation.headings;
+    const std::size_t h = std::min_element(headings.begin(), headings.end(), [&](double a, double b) {
+                            return std::abs(a - heading_degrees * M_PI / 180) < std::abs(b - heading_degrees * M_PI / 180);
+                          }) - headings.begin();
+    ASSERT_NEAR(headings[h], heading_degrees * M_PI / 180, 1e-9);
+    for (double period : {8.0, 10.0, 12.0, 15.0}) {
+      const double w = 2 * M_PI / period;
+      const auto& frequencies = bem.radiation.angular_frequencies;
+      const std::size_t n = std::min_element(frequencies.begin(), frequencies.end(), [&](double a, double b) {
+                              return std::abs(a - w) < std::abs(b - w);
+                            }) - frequencies.begin();
+      ASSERT_NEAR(frequencies[n], w, 1e-9);
+      const ComplexMatrix6 impedance = (-w * w * (mass + bem.radiation.added_mass[n]) + stiffness).cast<std::complex<double>>() +
+                                       i * w * (bem.radiation.damping[n] + viscous).cast<std::complex<double>>();
+      const hydro::ComplexVector6 rao = impedance.partialPivLu().solve(bem.excitation.force[h][n]);
+      const Record record = run_case("cases/hydro/semisub_6dof_regular_wave.yaml",
+                                     {"parameters.period=" + std::to_string(period),
+                                      "parameters.heading=deg(" + std::to_string(heading_degrees) + ")"});
+      const double t_fit = record.time.back() - 5 * period;
+      std::vector<double> times;
+      for (double t : record.time)
+        if (t >= t_fit) times.push_back(t);
+      const double largest_translation = rao.head<3>().cwiseAbs().maxCoeff(), largest_rotation = rao.tail<3>().cwiseAbs().maxCoeff();
+      for (int mode = 0; mode < 6; ++mode) {
+        std::vector<double> x;
+        for (std::size_t k = record.time.size() - times.size(); k < record.time.size(); ++k) x.push_back(record.xi[k][mode]);
+        const std::complex<double> measured = validation::fit_harmonic(times, x, w);
+        const double scale = mode < 3 ? std::max(largest_translation, 0.05) : std::max(largest_rotation, 0.05 / 20);
+        const double amplitude_error = std::abs(std::abs(measured) / std::abs(rao[mode]) - 1.0);
+        const double phase_error = std::abs(std::arg(measured / rao[mode])) * 180 / M_PI;
+        std::printf("beta %3.0f T %4.1f mode %d: |X| run %.4e  RAO %.4e  amplitude error %6.2f %%  phase error %6.2f deg%s\n",
+                    heading_degrees, period, mode + 1, std::abs(measured), std::abs(rao[mode]), 100 * amplitude_error,
+                    phase_error, std::abs(rao[mode]) >= 0.1 * scale ? "" : "  (small, not checked)");
+        if (std::abs(rao[mode]) < 0.1 * scale) continue;
+        EXPECT_LT(amplitude_error, 0.03) << "beta " << heading_degrees << " T " << period << " mode " << mode + 1;
+        EXPECT_LT(phase_error, 3.0) << "beta " << heading_degrees << " T " << period << " mode " << mode + 1;
+        worst_amplitude = std::max(worst_amplitude, amplitude_error);
+        worst_phase = std::max(worst_phase, phase_error);
+      }
+    }
+  }
+  RecordProperty("amplitude_error", std::to_string(worst_amplitude));
+  RecordProperty("phase_error_deg", std::to_string(worst_phase));
+}
+
+}  // namespace
+}  // namespace heavesim
