@@ -61,7 +61,9 @@ TEST(RigWaves, EveryCaseOfTheMatrixChecks) {
         "cases/c4_irregular_waves/h1_active_hydraulic_3h.yaml", "cases/c5_bit_on_bottom/h0_passive.yaml",
         "cases/c5_bit_on_bottom/h0_active.yaml", "cases/c1_heave_decay/h0_locked.yaml",
         "cases/c3_regular_waves/mss_h0_locked.yaml", "cases/c3_regular_waves/mss_h0_passive.yaml",
-        "cases/c3_regular_waves/mss_h0_active.yaml"}) {
+        "cases/c3_regular_waves/mss_h0_active.yaml", "cases/c3_regular_waves/h0b_passive.yaml",
+        "cases/c3_regular_waves/mss_h0b_passive.yaml", "cases/c3_regular_waves/h1_passive.yaml",
+        "cases/c3_regular_waves/mss_h1_passive.yaml"}) {
     const testing::CommandResult result =
         testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
