@@ -144,8 +144,16 @@ int run_command(const RunOptions& options) {
       fmt::print("  constraint drift: max |Phi| {:.3g}, max |J v| {:.3g}\n",
                  recorder.channel_maximum("/signals/constraint_residual"),
                  recorder.channel_maximum("/signals/constraint_velocity_residual"));
-    for (const auto& [joint, peak] : recorder.peak_reactions())
-      fmt::print("  peak reaction force at joint '{}': {:.6g} N\n", joint, peak);
+    for (const Recorder::JointLoad& load : recorder.joint_loads()) {
+      if (load.window.count() > 1 && load.window.mean()[0] > 0.0) {
+        const double mean = load.window.mean()[0], deviation = load.window.standard_deviation()[0];
+        fmt::print("  reaction force at joint '{}': peak {:.6g} N; from t = {:g} s mean {:.6g} N, std {:.4g} N "
+                   "(2 std / mean {:.3g} %)\n",
+                   load.joint, load.peak, recorder.evaluate_after(), mean, deviation, 200.0 * deviation / mean);
+      } else {
+        fmt::print("  peak reaction force at joint '{}': {:.6g} N\n", load.joint, load.peak);
+      }
+    }
     for (const std::string& line : recorder.compensators().headlines()) fmt::print("  {}\n", line);
   }
   return 0;

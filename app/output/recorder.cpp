@@ -40,7 +40,11 @@ std::string speed_units(const JointType& type, const std::string& per) {
 }  // namespace
 
 Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
-    : scene_(scene), file_(file), csv_(csv), compensators_(*scene.system, definition.output.evaluate_after) {
+    : scene_(scene),
+      file_(file),
+      csv_(csv),
+      evaluate_after_(definition.output.evaluate_after),
+      compensators_(*scene.system, definition.output.evaluate_after) {
   define_channels(definition);
   if (file_) {
     // HDF5 lists groups alphabetically; keep the model's (topological) order too.
@@ -127,7 +131,7 @@ void Recorder::define_channels(const CaseDefinition& definition) {
     if (output.reactions) {
       needs_reactions_ = true;
       reaction_joints_.push_back(i);
-      peak_reactions_.emplace_back(joint.name, 0.0);
+      joint_loads_.push_back({joint.name, 0.0, RunningStatistics(1)});
       add({base + "/reaction_force", 3, "N",
            "force exerted by the parent on the child at the joint origin, world axes", xyz,
            [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).force_world; }});
@@ -244,9 +248,11 @@ void Recorder::record(double t, const VectorX& y) {
   }
   if (csv_) csv_->write_row(csv_row_);
 
-  for (std::size_t k = 0; k < reaction_joints_.size(); ++k)
-    peak_reactions_[k].second =
-        std::max(peak_reactions_[k].second, joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm());
+  for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
+    const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
+    joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
+    if (t >= evaluate_after_ - 1e-9) joint_loads_[k].window.add(&load);
+  }
   const double kinetic = kinetic_energy(system.model(), system.data());
   const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
                         joint_elastic_energy(system.model(), system.configuration());
@@ -274,8 +280,16 @@ void Recorder::finish() {
   file_->set_attribute("/summary", "samples", samples_);
   file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
   compensators_.write(*file_);
-  for (const auto& [joint, peak] : peak_reactions_)
-    file_->set_attribute("/summary", "peak_reaction_force_" + joint, peak);
+  for (const JointLoad& load : joint_loads_) {
+    file_->set_attribute("/summary", "peak_reaction_force_" + load.joint, load.peak);
+    if (load.window.count() == 0) continue;
+    const std::string prefix = "reaction_force_" + load.joint;
+    file_->set_attribute("/summary", prefix + "_mean_N", load.window.mean()[0]);
+    file_->set_attribute("/summary", prefix + "_std_N", load.window.standard_deviation()[0]);
+    file_->set_attribute("/summary", prefix + "_min_N", load.window.minimum()[0]);
+    file_->set_attribute("/summary", prefix + "_max_N", load.window.maximum()[0]);
+  }
+  if (!joint_loads_.empty()) file_->set_attribute("/summary", "reaction_window_start_s", evaluate_after_);
   file_->flush();
 }
 

@@ -30,8 +30,18 @@ class Recorder {
   double channel_maximum(const std::string& path) const;
   /// Largest |E(t) - E(0)| / max(|E(0)|, max kinetic energy) seen so far (energy channel only).
   double relative_energy_drift() const { return energy_drift_; }
-  /// Largest reaction-force magnitude [N] per joint, in model joint order.
-  const std::vector<std::pair<std::string, double>>& peak_reactions() const { return peak_reactions_; }
+  /// The load a joint carries, |reaction force| [N] (world axes, parent on child): the
+  /// structural figures of a design run. For the hook (the top drive to string joint)
+  /// 2 std / mean is the hook-load variation of offshore-model.md §5.2.
+  struct JointLoad {
+    std::string joint;
+    double peak = 0.0;           // N, largest over the whole record
+    RunningStatistics window;    // N, over the evaluation window t >= output.evaluate_after
+  };
+  /// Per joint with reactions recorded, in model joint order.
+  const std::vector<JointLoad>& joint_loads() const { return joint_loads_; }
+  /// Start of the evaluation window [s] (output.evaluate_after).
+  double evaluate_after() const { return evaluate_after_; }
   const CompensatorSummary& compensators() const { return compensators_; }
 
  private:
@@ -61,7 +71,8 @@ class Recorder {
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
-  std::vector<std::pair<std::string, double>> peak_reactions_;
+  double evaluate_after_;
+  std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
   std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample
   CompensatorSummary compensators_;

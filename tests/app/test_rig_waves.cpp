@@ -5,6 +5,9 @@
 //   - C0: the stroke stays at mid-stroke and the joints carry the hand-summed weights;
 //   - C3 passive: the crown block's heave against the gas spring's transmissibility
 //     k / (k - M w^2) on the derrick motion the run actually produced;
+//   - C3 hook load: its variation is the string's mass times its recorded acceleration,
+//     and the summary's window statistics are the recorded channel's;
+//   - C1: the heave decay period and damping of the 1-DoF closed form;
 //   - C5: the bit starts at WOB0 = 150 kN, and its variation under the passive
 //     compensator is the gas spring's k_gas times the derrick heave.
 #include <gtest/gtest.h>
@@ -184,6 +187,41 @@ TEST(RigWaves, C3PassiveEfficiencyIsTheGasSpringTransmissibility) {
     }
     std::filesystem::remove(output);
   }
+}
+
+// C3 passive at T = 10 s, the hook: the rigid string hangs from the top drive by the
+// joint td_string, so Newton on the string alone gives F_hook = W_buoyed + m_string
+// z''_string. The harmonic of the recorded hook-load reaction at w must be m_string
+// w^2 times the harmonic of the string's recorded heave (2 %: |F| also holds the tiny
+// horizontal components, and the fit leaves the gas spring's free swing out); its mean
+// over the window is the buoyed weight (0.1 %). The summary's window statistics must
+// be those of the recorded reaction channel over t >= 300 s, recomputed here.
+TEST(RigWaves, C3HookLoadVariesByTheStringsInertiaAndTheSummaryHasIt) {
+  const double w = 2 * M_PI / 10.0, string_weight = m_string * g - string_buoyancy;
+  const std::string output = temporary("c3_hook.h5");
+  const testing::CommandResult result =
+      run("cases/c3_regular_waves/h0_passive.yaml", output, "--set output.channels=[bodies,reactions]");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("reaction force at joint 'td_string': peak"), std::string::npos) << result.output;
+  H5File file(output);
+  const std::vector<double> time = file.read("/time");
+  const std::vector<double> force = file.read("/joints/td_string/reaction_force");
+  const double string_heave = harmonic_amplitude(time, column(file.read("/bodies/drill_string/position"), 2), w, 300.0);
+  const double hook_variation = harmonic_amplitude(time, column(force, 2), w, 300.0);
+  EXPECT_NEAR(hook_variation, m_string * w * w * string_heave, 0.02 * m_string * w * w * string_heave);
+  double sum = 0.0, sum_squares = 0.0;
+  long count = 0;
+  for (std::size_t k = 0; k < time.size(); ++k) {
+    if (time[k] < 300.0 - 1e-9) continue;
+    const double load = std::hypot(force[3 * k], force[3 * k + 1], force[3 * k + 2]);
+    sum += load, sum_squares += load * load, ++count;
+  }
+  const double mean = sum / count, deviation = std::sqrt((sum_squares - count * mean * mean) / (count - 1));
+  EXPECT_NEAR(mean, string_weight, 1e-3 * string_weight);
+  EXPECT_NEAR(file.double_attribute("/summary", "reaction_force_td_string_mean_N"), mean, 1e-9 * mean);
+  EXPECT_NEAR(file.double_attribute("/summary", "reaction_force_td_string_std_N"), deviation, 1e-6 * deviation);
+  EXPECT_EQ(file.double_attribute("/summary", "reaction_window_start_s"), 300.0);
+  std::filesystem::remove(output);
 }
 
 // C1: heave decay of the default semi carrying the locked H0 rig, from +1 m in still
