@@ -3,7 +3,9 @@
 # that read, write or buffer (every malformed case and data file, the result file,
 # hull clipping, radiation memory, the validation table that runs every algorithm;
 # the list is in tests/CMakeLists.txt) with -fsanitize=address,undefined in
-# build-sanitize/ and runs them. Any sanitizer report fails the run.
+# build-sanitize/ and runs them, with the no-allocation tests: this build is also the
+# checked one (Eigen's allocation check and assertions on in every source; top
+# CMakeLists.txt). Any sanitizer report, Eigen assertion or allocation fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build_dir=build-sanitize

@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
 # The programs the suite runs (the benchmarks are built by scripts/build.sh alone).
-scripts/build.sh heavesim heavesim_tests heavesim_no_malloc_tests
+scripts/build.sh heavesim heavesim_tests
 (cd build && ctest --output-on-failure -j "$(nproc)")
 build/heavesim validate
 if [[ "${1:-}" != "--fast" ]]; then

@@ -10,7 +10,10 @@ void update_positions(const Model& model, Data& data, const VectorX& q) {
         [&](const auto& type) {
           const double* qi = q.data() + joint.q_index;
           type.place(data.X_world_link[joint.parent] * joint.placement, qi, data.X_world_link[i]);
-          type.world_motion_subspace(data.X_world_link[i], qi, data.motion_subspace_world.col(joint.v_index).data());
+          // The joint's nv columns of the column-major 6 x nv matrix start at 6 v_index; a
+          // fixed joint (nv = 0) at the end of the tree has v_index = nv, one past the last
+          // column, where it writes nothing (.col() would assert on that index).
+          type.world_motion_subspace(data.X_world_link[i], qi, data.motion_subspace_world.data() + 6 * joint.v_index);
         },
         joint.type);
 

@@ -1,7 +1,8 @@
 #pragma once
-// First in the precompiled header of the no-malloc test build (tests/CMakeLists.txt): makes
-// Eigen's runtime allocation check active in optimized builds and turns a violation
-// into an exception the test can see, instead of an abort.
+// First in every source of the checked (sanitizer) build, through the precompiled
+// header or -include (top CMakeLists.txt): makes Eigen's runtime allocation check and
+// its assertions active in an optimized build with NDEBUG, and turns a violation into
+// an exception a test can see, instead of an abort.
 #include <stdexcept>
 #define EIGEN_RUNTIME_NO_MALLOC
 #define eigen_assert(condition) \
