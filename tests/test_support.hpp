@@ -27,4 +27,15 @@ inline CommandResult run_command_line(const std::string& command) {
   return result;
 }
 
+/// `heavesim run` of a case (path relative to the source tree) writing `output`, with
+/// extra arguments (e.g. "--set key=value").
+inline CommandResult run_case(const std::string& case_file, const std::string& output, const std::string& extra = "") {
+  return run_command_line(heavesim_binary() + " run " + source_path(case_file) + " -o " + output + " " + extra);
+}
+
+/// `heavesim check` of a case (path relative to the source tree).
+inline CommandResult check_case(const std::string& case_file) {
+  return run_command_line(heavesim_binary() + " check " + source_path(case_file));
+}
+
 }  // namespace heavesim::testing

@@ -41,7 +41,6 @@ AxisArray::AxisArray(Hdf5Array array, const std::vector<int>& logical_to_stored)
     stored_strides[axis] = stored_strides[axis + 1] * array_.shape[axis + 1];
   for (int stored : logical_to_stored) {
     strides_.push_back(stored_strides[stored]);
-    sizes_.push_back(array_.shape[stored]);
   }
 }
 

@@ -23,11 +23,10 @@ class AxisArray {
  public:
   AxisArray(Hdf5Array array, const std::vector<int>& logical_to_stored);
   double at(std::initializer_list<std::size_t> logical_index) const;
-  std::size_t size(int logical_axis) const { return sizes_[logical_axis]; }
 
  private:
   Hdf5Array array_;
-  std::vector<std::size_t> strides_, sizes_;  // per logical axis
+  std::vector<std::size_t> strides_;  // per logical axis
 };
 
 /// Fails with the dataset named unless `value` is finite; `what` says which entry.

@@ -84,10 +84,11 @@ class CapytaineFile {
     return value;
   }
 
-  /// M(i, j) = factor value(a, b) for influenced dof a (mode i) and radiating dof b
-  /// (mode j), every value finite; `at` names the other indices for errors.
+  /// M(i, j) = factor value(a, b) for influenced dof a (mode influenced[a]) and radiating
+  /// dof b (mode radiating[b]), every value finite; `at` names the other indices for errors.
   template <class Value>
-  hydro::Matrix6 dof_matrix(const std::string& variable, double factor, const std::string& at, Value value) const {
+  hydro::Matrix6 dof_matrix(const std::vector<int>& influenced, const std::vector<int>& radiating,
+                            const std::string& variable, double factor, const std::string& at, Value value) const {
     hydro::Matrix6 M = hydro::Matrix6::Zero();
     for (std::size_t a = 0; a < influenced.size(); ++a)
       for (std::size_t b = 0; b < radiating.size(); ++b) {
@@ -101,12 +102,6 @@ class CapytaineFile {
   }
 
   Hdf5DataFile file;
-  std::vector<int> influenced, radiating;  // modes of the dof coordinates, once read_dofs() ran
-
-  void read_dofs() {
-    influenced = modes("influenced_dof");
-    radiating = modes("radiating_dof");
-  }
 };
 
 }  // namespace
@@ -118,10 +113,10 @@ hydro::RadiationData read_capytaine_radiation(const std::string& path, const Cas
   const AxisArray A = capytaine.variable("added_mass", dimensions);
   const AxisArray B = capytaine.variable("radiation_damping", dimensions);
   const std::vector<double> omega = capytaine.frequencies();
-  capytaine.read_dofs();
+  const std::vector<int> influenced = capytaine.modes("influenced_dof"), radiating = capytaine.modes("radiating_dof");
   const double factor = fluid.density / capytaine.positive("rho");
   auto matrix = [&](const AxisArray& array, const std::string& variable, std::size_t k) {
-    return capytaine.dof_matrix(variable, factor, fmt::format("omega = {:g}, ", omega[k]),
+    return capytaine.dof_matrix(influenced, radiating, variable, factor, fmt::format("omega = {:g}, ", omega[k]),
                                 [&](std::size_t a, std::size_t b) { return array.at({k, a, b}); });
   };
   hydro::RadiationData data;
@@ -209,9 +204,9 @@ hydro::ExcitationData read_capytaine_excitation(const std::string& path, const C
 hydro::Matrix6 read_capytaine_hydrostatic_stiffness(const std::string& path, const CaseFluid& fluid) {
   CapytaineFile capytaine(path);
   const AxisArray stiffness = capytaine.variable("hydrostatic_stiffness", {"influenced_dof", "radiating_dof"});
-  capytaine.read_dofs();
+  const std::vector<int> influenced = capytaine.modes("influenced_dof"), radiating = capytaine.modes("radiating_dof");
   const double factor = fluid.density * fluid.gravity / (capytaine.positive("rho") * capytaine.positive("g"));
-  return capytaine.dof_matrix("/hydrostatic_stiffness", factor, "",
+  return capytaine.dof_matrix(influenced, radiating, "/hydrostatic_stiffness", factor, "",
                               [&](std::size_t a, std::size_t b) { return stiffness.at({a, b}); });
 }
 

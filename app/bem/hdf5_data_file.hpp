@@ -28,7 +28,6 @@ class Hdf5DataFile {
   Hdf5DataFile(const Hdf5DataFile&) = delete;
   Hdf5DataFile& operator=(const Hdf5DataFile&) = delete;
 
-  const std::string& path() const { return path_; }
   bool has(const std::string& object) const;
 
   /// The dataset's shape, whatever it holds.

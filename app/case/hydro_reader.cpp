@@ -196,7 +196,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     item.expect_map({"name", "type", "body", "file", "heave_estimate", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::wave_excitation;
     if (item.has("file") == item.has("heave_estimate"))
-      item.fail("exactly one of 'file' (a WAMIT .3 file) and 'heave_estimate' (the semi-submersible hand estimate)");
+      item.fail("exactly one of 'file' (a WAMIT .3, BEMIO .h5 or Capytaine .nc file) and 'heave_estimate' (the semi-submersible hand estimate)");
     if (auto estimate = item.optional("heave_estimate")) {
       estimate->expect_map({"pontoon_bottom_area", "waterplane_area", "keel_depth", "pontoon_top_depth",
                             "added_mass", "added_mass_depth"});

@@ -31,7 +31,7 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
     p.min_pressure = std::min(p.min_pressure, s.gas_pressure);
     p.max_temperature = std::max(p.max_temperature, s.gas_temperature);
     p.min_temperature = std::min(p.min_temperature, s.gas_temperature);
-    if (t >= evaluate_after_ - 1e-9) {
+    if (in_window(t)) {
       // The moving side sits (mid-stroke + s) along the stroke axis from the base.
       const StrokeAxis& axis = p.element->axis();
       const BaseMotion base = base_motion(axis, model, data);
@@ -41,7 +41,7 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
       p.load_height.add(&load_height);
     }
   }
-  if (t >= evaluate_after_ - 1e-9)
+  if (in_window(t))
     for (Contact& c : contacts_) {
       const double force = c.element->state(data).force;
       c.force.add(&force);

@@ -28,6 +28,10 @@ class CompensatorSummary {
  public:
   /// `evaluate_after` [s]: start of the efficiency window.
   CompensatorSummary(const MultibodySystem& system, double evaluate_after);
+  /// Start of the evaluation window [s], and whether a sample at t [s] falls in it (the
+  /// recorder's per-joint load statistics use the same window).
+  double evaluate_after() const { return evaluate_after_; }
+  bool in_window(double t) const { return t >= evaluate_after_ - 1e-9; }
   /// After system.evaluate(t, y): takes one sample.
   void observe(double t, const VectorX& y);
   void write(ResultFile& file) const;

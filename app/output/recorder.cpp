@@ -43,7 +43,6 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* f
     : scene_(scene),
       file_(file),
       csv_(csv),
-      evaluate_after_(definition.output.evaluate_after),
       compensators_(*scene.system, definition.output.evaluate_after) {
   define_channels(definition);
   if (file_) {
@@ -251,7 +250,7 @@ void Recorder::record(double t, const VectorX& y) {
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
     const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
     joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
-    if (t >= evaluate_after_ - 1e-9) joint_loads_[k].window.add(&load);
+    if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
   const double kinetic = kinetic_energy(system.model(), system.data());
   const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
@@ -289,7 +288,7 @@ void Recorder::finish() {
     file_->set_attribute("/summary", prefix + "_min_N", load.window.minimum()[0]);
     file_->set_attribute("/summary", prefix + "_max_N", load.window.maximum()[0]);
   }
-  if (!joint_loads_.empty()) file_->set_attribute("/summary", "reaction_window_start_s", evaluate_after_);
+  if (!joint_loads_.empty()) file_->set_attribute("/summary", "reaction_window_start_s", evaluate_after());
   file_->flush();
 }
 

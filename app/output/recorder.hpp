@@ -41,7 +41,7 @@ class Recorder {
   /// Per joint with reactions recorded, in model joint order.
   const std::vector<JointLoad>& joint_loads() const { return joint_loads_; }
   /// Start of the evaluation window [s] (output.evaluate_after).
-  double evaluate_after() const { return evaluate_after_; }
+  double evaluate_after() const { return compensators_.evaluate_after(); }
   const CompensatorSummary& compensators() const { return compensators_; }
 
  private:
@@ -71,7 +71,6 @@ class Recorder {
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
-  double evaluate_after_;
   std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
   std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample

@@ -28,23 +28,23 @@ class GroundContact : public ForceElement {
                  {"penetration", "m", "depth of the point below the contact surface, > 0 in contact"}};
   }
   const std::string& name() const override { return name_; }
-  const GroundContactParameters& parameters() const { return parameters_; }
 
   struct State {
+    Vector3 position;    // m, the point, world frame
     double penetration;  // m
     double force;        // N, >= 0, upward on the point
   };
   State state(const Data& data) const {
-    const Vector3 p = point_.position_world(data);
+    const Vector3 p = point_.position_world(data);  // once: the rate and the load need it too
     const double penetration = parameters_.surface_height - p.z();
-    if (penetration <= 0.0) return {penetration, 0.0};
-    const double rate = -point_.velocity_world(data).z();
-    return {penetration, std::max(0.0, parameters_.stiffness * penetration + parameters_.damping * rate)};
+    if (penetration <= 0.0) return {p, penetration, 0.0};
+    const double rate = -data.velocity_world[point_.link].point_velocity(p).z();
+    return {p, penetration, std::max(0.0, parameters_.stiffness * penetration + parameters_.damping * rate)};
   }
 
   void apply(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, AppliedForces& forces) const override {
     const State s = state(data);
-    if (s.force > 0.0) forces.add_force_at_point(point_.link, point_.position_world(data), Vector3(0.0, 0.0, s.force));
+    if (s.force > 0.0) forces.add_force_at_point(point_.link, s.position, Vector3(0.0, 0.0, s.force));
   }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, std::span<double> values) const override {

@@ -15,10 +15,7 @@
 namespace heavesim {
 namespace {
 
-testing::CommandResult run(const std::string& case_file, const std::string& output, const std::string& extra = "") {
-  return testing::run_command_line(testing::heavesim_binary() + " run " + testing::source_path(case_file) + " -o " +
-                                   output + " " + extra);
-}
+using testing::run_case;
 
 double amplitude(const std::vector<double>& series, std::size_t from) {
   double low = 1e300, high = -1e300;
@@ -32,7 +29,7 @@ TEST(CompensatorCases, EveryRigCaseChecks) {
                            "cases/c2_prescribed_heave/h0_active_hydraulic.yaml",
                            "cases/validation/c2_static_h0b.yaml", "cases/validation/c2_static_h0_elastic.yaml"}) {
     const testing::CommandResult result =
-        testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
+        testing::check_case(file);
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
   }
 }
@@ -40,7 +37,7 @@ TEST(CompensatorCases, EveryRigCaseChecks) {
 TEST(CompensatorCases, ChannelsAndHeadlinesInTheResultFile) {
   const std::string output = temporary("c2_hydraulic.h5");
   const testing::CommandResult result =
-      run("cases/c2_prescribed_heave/h0_active_hydraulic.yaml", output, "--set solver.t_end=20 --set solver.rtol=1e-6");
+      run_case("cases/c2_prescribed_heave/h0_active_hydraulic.yaml", output, "--set solver.t_end=20 --set solver.rtol=1e-6");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("compensator 'passive': stroke"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("compensator 'active': peak force"), std::string::npos) << result.output;
@@ -70,7 +67,7 @@ TEST(CompensatorCases, EndStopContactsMatchTheRecordedStroke) {
   // Launched at 1.1 m/s the 290 t mass would swing about +-5.5 m: it hits both stops.
   const std::string output = temporary("c3_stops.h5");
   const testing::CommandResult result =
-      run("cases/validation/c3_gas_spring.yaml", output, "--set joints[compensator].initial.qd=1.1");
+      run_case("cases/validation/c3_gas_spring.yaml", output, "--set joints[compensator].initial.qd=1.1");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   const std::vector<double> stroke = file.read("/forces/passive/stroke");
@@ -95,7 +92,7 @@ TEST(CompensatorCases, PrescribedHeaveEfficiencyOfThePassiveAndActiveH0) {
   for (const char* mode : {"passive", "active"}) {
     const std::string output = temporary(std::string("c2_") + mode + ".h5");
     const testing::CommandResult result =
-        run(std::string("cases/c2_prescribed_heave/h0_") + mode + ".yaml", output, "--set solver.t_end=100");
+        run_case(std::string("cases/c2_prescribed_heave/h0_") + mode + ".yaml", output, "--set solver.t_end=100");
     ASSERT_EQ(result.exit_code, 0) << result.output;
     H5File file(output);
     const std::vector<double> time = file.read("/time");
@@ -126,7 +123,7 @@ TEST(CompensatorCases, SummaryEfficiencyMatchesTheLinearTransmissibility) {
   for (double period : {8.0, 12.0}) {
     const std::string output = temporary(fmt::format("c1_efficiency_{:g}.h5", period));
     const testing::CommandResult result =
-        run("cases/validation/c1_passive_compensator.yaml", output,
+        run_case("cases/validation/c1_passive_compensator.yaml", output,
             fmt::format("--set parameters.T={:g} --set output.evaluate_after=0.3*T", period));
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("compensator 'passive': efficiency"), std::string::npos) << result.output;

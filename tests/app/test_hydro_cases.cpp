@@ -18,10 +18,7 @@ namespace {
 
 constexpr double rho = 1025.0, g = 9.81;
 
-testing::CommandResult run(const std::string& case_file, const std::string& output, const std::string& extra = "") {
-  return testing::run_command_line(testing::heavesim_binary() + " run " + testing::source_path(case_file) + " -o " +
-                                   output + " " + extra);
-}
+using testing::run_case;
 
 /// Rows of whitespace-separated numbers of a text file (a small parser of its own, so the
 /// reference does not go through hydro/bem).
@@ -47,7 +44,7 @@ TEST(HydroCases, EveryHydroCaseChecks) {
                            "cases/hydro/semisub_6dof_pitch_decay.yaml", "cases/hydro/semisub_6dof_regular_wave.yaml",
                            "cases/hydro/semisub_6dof_irregular_sea.yaml"}) {
     const testing::CommandResult result =
-        testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
+        testing::check_case(file);
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
   }
 }
@@ -78,7 +75,7 @@ TEST(HydroCases, HeaveDecayPeriodMatchesMassAddedMassAndStiffnessFromTheFiles) {
   for (int k = 0; k < 100; ++k) period = 2 * M_PI * std::sqrt((mass + added_mass(period)) / c33);
 
   const std::string output = temporary("hydro_heave_decay.h5");
-  const testing::CommandResult result = run("cases/hydro/heave_decay.yaml", output);
+  const testing::CommandResult result = run_case("cases/hydro/heave_decay.yaml", output);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   ASSERT_TRUE(file.ok());
@@ -93,7 +90,7 @@ TEST(HydroCases, HeaveDecayPeriodMatchesMassAddedMassAndStiffnessFromTheFiles) {
 
 TEST(HydroCases, ResultFileCarriesHydroLoadsAndWaveElevation) {
   const std::string output = temporary("hydro_regular.h5");
-  const testing::CommandResult result = run("cases/hydro/regular_wave.yaml", output, "--set solver.t_end=40 --set output.evaluate_after=20");
+  const testing::CommandResult result = run_case("cases/hydro/regular_wave.yaml", output, "--set solver.t_end=40 --set output.evaluate_after=20");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   ASSERT_TRUE(file.ok());
@@ -128,7 +125,7 @@ TEST(HydroCases, NonlinearHydrostaticsRecordsBuoyancyOfTheClippedMesh) {
   // that instant); at +1 m heave the volume is about V0 - A_wp * 1 m, with V0 = 50 709 m^3
   // and A_wp = 973.14 m^2 from semisub.out (the mesh is within 0.5 % of both, H2).
   const std::string output = temporary("hydro_nonlinear.h5");
-  const testing::CommandResult result = run("cases/hydro/heave_decay_nonlinear.yaml", output,
+  const testing::CommandResult result = run_case("cases/hydro/heave_decay_nonlinear.yaml", output,
                                             "--set solver.t_end=0.5 --set output.interval=0.05");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
@@ -150,7 +147,7 @@ TEST(HydroCases, MooringAndDampingGiveTheDampedOscillator) {
   const double m = 1.0e6, k = 4.0e5, b = 8.0e4, w = std::sqrt(k / m), zeta = b / (2 * std::sqrt(k * m)),
                wd = w * std::sqrt(1 - zeta * zeta);
   const std::string output = temporary("hydro_moored.h5");
-  const testing::CommandResult result = run("tests/cases/moored_surge.yaml", output);
+  const testing::CommandResult result = run_case("tests/cases/moored_surge.yaml", output);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   ASSERT_TRUE(file.ok());

@@ -28,10 +28,7 @@ constexpr double g = 9.81, rho = 1025.0, rho_steel = 7850.0;
 constexpr double m_crown = 30e3, m_tb = 25e3, m_td = 45e3, m_string = 190e3;  // kg, offshore-model.md §1.3
 const double string_buoyancy = rho / rho_steel * m_string * g;              // N
 
-testing::CommandResult run(const std::string& case_file, const std::string& output, const std::string& extra = "") {
-  return testing::run_command_line(testing::heavesim_binary() + " run " + testing::source_path(case_file) + " -o " +
-                                   output + " " + extra);
-}
+using testing::run_case;
 
 /// Column c of an (N, 3) record.
 std::vector<double> column(const std::vector<double>& xyz, int c) {
@@ -68,7 +65,7 @@ TEST(RigWaves, EveryCaseOfTheMatrixChecks) {
         "cases/c3_regular_waves/mss_h0b_passive.yaml", "cases/c3_regular_waves/h1_passive.yaml",
         "cases/c3_regular_waves/mss_h1_passive.yaml"}) {
     const testing::CommandResult result =
-        testing::run_command_line(testing::heavesim_binary() + " check " + testing::source_path(file));
+        testing::check_case(file);
     EXPECT_EQ(result.exit_code, 0) << file << ": " << result.output;
   }
 }
@@ -90,7 +87,7 @@ TEST(RigWaves, DefaultSemiHeaveRaoMatchesTheFallbackTable) {
     const double closed_form = std::abs(X3) / std::abs(std::complex<double>(C33 - (Delta + A33) * w * w, B33 * w));
     const std::string output = temporary(fmt::format("semi_rao_{:g}.h5", T));
     const testing::CommandResult result =
-        run("cases/c3_regular_waves/semi_rao.yaml", output, fmt::format("--set parameters.T={:g}", T));
+        run_case("cases/c3_regular_waves/semi_rao.yaml", output, fmt::format("--set parameters.T={:g}", T));
     ASSERT_EQ(result.exit_code, 0) << result.output;
     H5File file(output);
     const double rao = harmonic_amplitude(file.read("/time"), column(file.read("/bodies/platform/position"), 2), w, 500.0);
@@ -107,7 +104,7 @@ TEST(RigWaves, DefaultSemiHeaveRaoMatchesTheFallbackTable) {
 void expect_static_reactions(const std::string& case_file, const std::vector<std::pair<std::string, double>>& loads,
                              const std::vector<std::string>& strokes) {
   const std::string output = temporary("c0_static.h5");
-  const testing::CommandResult result = run(case_file, output);
+  const testing::CommandResult result = run_case(case_file, output);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   for (const auto& [path, load] : loads) {
@@ -171,7 +168,7 @@ TEST(RigWaves, C3PassiveEfficiencyIsTheGasSpringTransmissibility) {
                                                  {"cases/c3_regular_waves/mss_h0_passive.yaml", 10.0}};
   for (const auto& [case_file, T] : runs) {
     const std::string output = temporary(fmt::format("c3_passive_{:g}.h5", T));
-    const testing::CommandResult result = run(case_file, output,
+    const testing::CommandResult result = run_case(case_file, output,
                                               fmt::format("--set parameters.T={:g} --set output.channels=[bodies]", T));
     ASSERT_EQ(result.exit_code, 0) << result.output;
     H5File file(output);
@@ -200,7 +197,7 @@ TEST(RigWaves, C3HookLoadVariesByTheStringsInertiaAndTheSummaryHasIt) {
   const double w = 2 * M_PI / 10.0, string_weight = m_string * g - string_buoyancy;
   const std::string output = temporary("c3_hook.h5");
   const testing::CommandResult result =
-      run("cases/c3_regular_waves/h0_passive.yaml", output, "--set output.channels=[bodies,reactions]");
+      run_case("cases/c3_regular_waves/h0_passive.yaml", output, "--set output.channels=[bodies,reactions]");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("reaction force at joint 'td_string': peak"), std::string::npos) << result.output;
   H5File file(output);
@@ -239,7 +236,7 @@ TEST(RigWaves, C1HeaveDecayHasTheClosedFormPeriodAndDamping) {
   const double period = 2 * M_PI / (w_n * std::sqrt(1 - zeta * zeta));
   const std::string output = temporary("c1_locked.h5");
   const testing::CommandResult result =
-      run("cases/c1_heave_decay/h0_locked.yaml", output, "--set output.channels=[bodies]");
+      run_case("cases/c1_heave_decay/h0_locked.yaml", output, "--set output.channels=[bodies]");
   ASSERT_EQ(result.exit_code, 0) << result.output;
   H5File file(output);
   const std::vector<double> time = file.read("/time");
@@ -263,7 +260,7 @@ TEST(RigWaves, C5BitOnBottomStartsAtWob0AndVariesByTheGasSpring) {
   const double W_c = (m_crown + m_tb + m_td + m_string) * g - string_buoyancy - 150e3;
   const double A = 0.1735, p0 = 101325.0 + W_c / A, k_gas = 1.4 * p0 * A * A / 60.0;
   const std::string output = temporary("c5_passive.h5");
-  const testing::CommandResult result = run("cases/c5_bit_on_bottom/h0_passive.yaml", output);
+  const testing::CommandResult result = run_case("cases/c5_bit_on_bottom/h0_passive.yaml", output);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   EXPECT_NE(result.output.find("contact 'bit': force mean"), std::string::npos) << result.output;
   H5File file(output);
