@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "app/bem/bem_file.hpp"
+#include "io/bem/bem_file.hpp"
 #include "hydro/radiation/state_space.hpp"
 
 namespace heavesim {

@@ -1,15 +1,12 @@
 #include "app/output/result_file.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace heavesim {
 namespace {
 
-hid_t link_create_plist() {
-  const hid_t plist = H5Pcreate(H5P_LINK_CREATE);
-  H5Pset_create_intermediate_group(plist, 1);
-  return plist;
-}
+using hdf5::Handle;
 
 void replace_attribute(hid_t object, const std::string& name) {
   if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
@@ -19,42 +16,33 @@ void replace_attribute(hid_t object, const std::string& name) {
 
 ResultFile::ResultFile(const std::string& path) : path_(path) {
   H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by return codes below
-  file_ = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file_ < 0) throw std::runtime_error("cannot create result file '" + path + "'");
+  file_ = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  if (!file_.valid()) throw std::runtime_error("cannot create result file '" + path + "'");
 }
 
 ResultFile::~ResultFile() {
   flush();
-  for (Series& series : series_)
-    if (series.dataset >= 0) H5Dclose(series.dataset);
-  if (file_ >= 0) H5Fclose(file_);
+  // The series' datasets close before the file (members are destroyed in reverse
+  // order of declaration, and series_ is declared after file_).
 }
 
-hid_t ResultFile::open_object(const std::string& object_path) {
-  if (object_path == "/" || object_path.empty()) return H5Oopen(file_, "/", H5P_DEFAULT);
-  if (H5Lexists(file_, object_path.c_str(), H5P_DEFAULT) <= 0) {
-    const hid_t plist = link_create_plist();
-    const hid_t group = H5Gcreate2(file_, object_path.c_str(), plist, H5P_DEFAULT, H5P_DEFAULT);
-    H5Pclose(plist);
-    return group;
+Handle ResultFile::open_object(const std::string& object_path) {
+  if (object_path == "/" || object_path.empty()) return Handle(H5Oopen(file_.get(), "/", H5P_DEFAULT));
+  if (H5Lexists(file_.get(), object_path.c_str(), H5P_DEFAULT) <= 0) {
+    const Handle links = hdf5::intermediate_group_links();
+    return Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
   }
-  return H5Oopen(file_, object_path.c_str(), H5P_DEFAULT);
+  return Handle(H5Oopen(file_.get(), object_path.c_str(), H5P_DEFAULT));
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
-  const hid_t object = open_object(object_path);
-  replace_attribute(object, name);
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attribute = H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+  const Handle object = open_object(object_path);
+  replace_attribute(object.get(), name);
+  const Handle type = hdf5::variable_text_type();
+  const Handle space(H5Screate(H5S_SCALAR));
+  const Handle attribute(H5Acreate2(object.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
   const char* text = value.c_str();
-  H5Awrite(attribute, type, &text);
-  H5Aclose(attribute);
-  H5Sclose(space);
-  H5Tclose(type);
-  H5Oclose(object);
+  H5Awrite(attribute.get(), type.get(), &text);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, double value) {
@@ -62,43 +50,34 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, long value) {
-  const hid_t object = open_object(object_path);
-  replace_attribute(object, name);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t attribute = H5Acreate2(object, name.c_str(), H5T_NATIVE_LONG, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attribute, H5T_NATIVE_LONG, &value);
-  H5Aclose(attribute);
-  H5Sclose(space);
-  H5Oclose(object);
+  const Handle object = open_object(object_path);
+  replace_attribute(object.get(), name);
+  const Handle space(H5Screate(H5S_SCALAR));
+  const Handle attribute(
+      H5Acreate2(object.get(), name.c_str(), H5T_NATIVE_LONG, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  H5Awrite(attribute.get(), H5T_NATIVE_LONG, &value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name,
                                const std::vector<double>& values) {
-  const hid_t object = open_object(object_path);
-  replace_attribute(object, name);
+  const Handle object = open_object(object_path);
+  replace_attribute(object.get(), name);
   const hsize_t size = values.size();
-  const hid_t space = size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr);
-  const hid_t attribute = H5Acreate2(object, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-  H5Awrite(attribute, H5T_NATIVE_DOUBLE, values.data());
-  H5Aclose(attribute);
-  H5Sclose(space);
-  H5Oclose(object);
+  const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
+  const Handle attribute(
+      H5Acreate2(object.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
+  H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values.data());
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
-  const hid_t type = H5Tcopy(H5T_C_S1);
-  H5Tset_size(type, H5T_VARIABLE);
-  H5Tset_cset(type, H5T_CSET_UTF8);
-  const hid_t space = H5Screate(H5S_SCALAR);
-  const hid_t plist = link_create_plist();
-  const hid_t dataset = H5Dcreate2(file_, dataset_path.c_str(), type, space, plist, H5P_DEFAULT, H5P_DEFAULT);
-  if (dataset < 0) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
+  const Handle type = hdf5::variable_text_type();
+  const Handle space(H5Screate(H5S_SCALAR));
+  const Handle links = hdf5::intermediate_group_links();
+  const Handle dataset(
+      H5Dcreate2(file_.get(), dataset_path.c_str(), type.get(), space.get(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+  if (!dataset.valid()) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
   const char* data = text.c_str();
-  H5Dwrite(dataset, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, &data);
-  H5Dclose(dataset);
-  H5Pclose(plist);
-  H5Sclose(space);
-  H5Tclose(type);
+  H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data);
   set_attribute(dataset_path, "description", description);
   set_attribute(dataset_path, "units", std::string("-"));
 }
@@ -109,20 +88,17 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   const hsize_t initial[2] = {0, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
   const hsize_t chunk[2] = {chunk_rows, static_cast<hsize_t>(std::max(columns, 1))};
-  const hid_t space = H5Screate_simple(rank, initial, maximum);
-  const hid_t create = H5Pcreate(H5P_DATASET_CREATE);
-  H5Pset_chunk(create, rank, chunk);
-  const hid_t plist = link_create_plist();
-  const hid_t dataset =
-      H5Dcreate2(file_, dataset_path.c_str(), H5T_NATIVE_DOUBLE, space, plist, create, H5P_DEFAULT);
-  H5Pclose(plist);
-  H5Pclose(create);
-  H5Sclose(space);
-  if (dataset < 0) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
+  const Handle space(H5Screate_simple(rank, initial, maximum));
+  const Handle create(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_chunk(create.get(), rank, chunk);
+  const Handle links = hdf5::intermediate_group_links();
+  Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links.get(),
+                            create.get(), H5P_DEFAULT));
+  if (!dataset.valid()) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
   Series series;
-  series.dataset = dataset;
+  series.dataset = std::move(dataset);
   series.columns = columns;
-  series_.push_back(series);
+  series_.push_back(std::move(series));
   set_attribute(dataset_path, "units", units);
   set_attribute(dataset_path, "description", description);
   return static_cast<int>(series_.size()) - 1;
@@ -136,26 +112,25 @@ void ResultFile::append(int series_id, const double* row) {
 }
 
 void ResultFile::flush() {
-  if (file_ < 0) return;
+  if (!file_.valid()) return;
   for (Series& series : series_) {
     const int width = std::max(series.columns, 1);
     const hsize_t rows = series.buffer.size() / width;
     if (rows == 0) continue;
     const int rank = series.columns == 0 ? 1 : 2;
     const hsize_t new_size[2] = {series.rows_written + rows, static_cast<hsize_t>(series.columns)};
-    H5Dset_extent(series.dataset, new_size);
-    const hid_t file_space = H5Dget_space(series.dataset);
+    H5Dset_extent(series.dataset.get(), new_size);
+    const Handle file_space(H5Dget_space(series.dataset.get()));
     const hsize_t start[2] = {series.rows_written, 0};
     const hsize_t count[2] = {rows, static_cast<hsize_t>(series.columns)};
-    H5Sselect_hyperslab(file_space, H5S_SELECT_SET, start, nullptr, count, nullptr);
-    const hid_t memory_space = H5Screate_simple(rank, count, nullptr);
-    H5Dwrite(series.dataset, H5T_NATIVE_DOUBLE, memory_space, file_space, H5P_DEFAULT, series.buffer.data());
-    H5Sclose(memory_space);
-    H5Sclose(file_space);
+    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
+    const Handle memory_space(H5Screate_simple(rank, count, nullptr));
+    H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
+             series.buffer.data());
     series.rows_written += rows;
     series.buffer.clear();
   }
-  H5Fflush(file_, H5F_SCOPE_GLOBAL);
+  H5Fflush(file_.get(), H5F_SCOPE_GLOBAL);
 }
 
 }  // namespace heavesim

@@ -2,10 +2,10 @@
 // The HDF5 result file (contract in docs/result-file.md): time series that grow in
 // chunks as the run goes and are flushed to disk, so that a run stopped early still
 // leaves a readable file with complete = 0.
-#include <hdf5.h>
-
 #include <string>
 #include <vector>
+
+#include "io/hdf5/hdf5_handle.hpp"
 
 namespace heavesim {
 
@@ -38,16 +38,16 @@ class ResultFile {
 
  private:
   struct Series {
-    hid_t dataset = -1;
+    hdf5::Handle dataset;
     int columns = 0;
     hsize_t rows_written = 0;
     std::vector<double> buffer;
   };
-  hid_t ensure_parent_groups(const std::string& path);
-  hid_t open_object(const std::string& object_path);
+  /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
+  hdf5::Handle open_object(const std::string& object_path);
 
   std::string path_;
-  hid_t file_ = -1;
+  hdf5::Handle file_;
   std::vector<Series> series_;
   static constexpr hsize_t chunk_rows = 1024;
 };

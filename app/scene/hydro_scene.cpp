@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "app/bem/bem_file.hpp"
+#include "io/bem/bem_file.hpp"
 #include "app/scene/recorded_load.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
@@ -43,7 +43,7 @@ auto read_checked(const CaseDefinition& definition, const HydroForceDefinition& 
   }
 }
 
-hydro::WamitScaling scaling(const CaseDefinition& definition, const HydroForceDefinition& force) {
+bem::WamitScaling scaling(const CaseDefinition& definition, const HydroForceDefinition& force) {
   return {definition.water.density, definition.gravity.norm(), force.length_scale};
 }
 
@@ -67,7 +67,7 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
     data.added_inertia.try_emplace(body, Matrix6::Zero()).first->second += added;  // several elements add up
   };
   for (const HydroForceDefinition& force : definition.hydro_forces) {
-    const hydro::WamitScaling s = scaling(definition, force);
+    const bem::WamitScaling s = scaling(definition, force);
     using Type = HydroForceDefinition::Type;
     if (force.type == Type::added_mass) {
       add_inertia(force.body, hydro::added_inertia_in_body_frame(force.matrix));

@@ -26,7 +26,7 @@
 
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 
@@ -39,7 +39,7 @@ using ComplexMatrix6 = Eigen::Matrix<std::complex<double>, 6, 6>;
 constexpr double rho = 1025.0, g = 9.81;
 
 const hydro::BemData& semisub() {
-  static const hydro::BemData bem = hydro::read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
+  static const hydro::BemData bem = bem::read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
   return bem;
 }
 

@@ -12,7 +12,7 @@
 
 #include <Eigen/QR>
 
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
 #include "hydro/elements/radiation_convolution.hpp"
@@ -34,7 +34,7 @@ namespace {
 constexpr double rho = 1025.0, g = 9.81, mass = 51979800.0;  // semisub.frc
 
 const BemData& semisub() {
-  static const BemData bem = read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
+  static const BemData bem = bem::read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
   return bem;
 }
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 #include "hydro/radiation/added_mass.hpp"
 #include "hydro/radiation/state_space.hpp"
 #include "tests/test_support.hpp"
@@ -31,7 +31,7 @@ TEST(HydroRadiation, AddedInertiaMovesLikeARigidInertia) {
 
 struct SemisubKernel : ::testing::Test {
   static void SetUpTestSuite() {
-    bem = new BemData(read_wamit(semisub));
+    bem = new BemData(bem::read_wamit(semisub));
     kernel = new RetardationKernel(retardation_kernel(bem->radiation, 600.0, 0.05));
   }
   static void TearDownTestSuite() {

@@ -11,7 +11,7 @@
 #include <Eigen/QR>
 #include <fmt/format.h>
 
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
@@ -37,7 +37,7 @@ std::string semisub_base() {
 }
 
 const BemData& semisub() {
-  static const BemData bem = read_wamit(semisub_base(), {rho, g, 1.0});
+  static const BemData bem = bem::read_wamit(semisub_base(), {rho, g, 1.0});
   return bem;
 }
 
@@ -244,7 +244,7 @@ std::vector<ValidationRow> check_h7_bem_readers() {
   rows.push_back({"H7", subject, "A33(inf) vs 5.93e7 kg, relative", relative(r.added_mass_infinite(2, 2), 5.93e7), 0.001});
   rows.push_back({"H7", subject, "C33 vs 9.785e6 N/m, relative", relative(bem.hydrostatic_stiffness(2, 2), 9.785e6), 0.0005});
   // Heave RAO from the coefficients vs WAMIT's own .4.
-  const ExcitationData rao = read_wamit_3(semisub_base() + ".4", {1.0, 1.0, 1.0});
+  const ExcitationData rao = bem::read_wamit_3(semisub_base() + ".4", {1.0, 1.0, 1.0});
   double worst = 0.0;
   for (size_t n = 0; n < r.angular_frequencies.size(); ++n) {
     const double w = r.angular_frequencies[n];
@@ -256,7 +256,7 @@ std::vector<ValidationRow> check_h7_bem_readers() {
                   worst, 2e-3});
   // The Hulme table written as a .1 for a = ULEN = 5 m.
   const double a = 5.0, volume = 2.0 / 3.0 * M_PI * a * a * a;
-  const RadiationData hulme = read_wamit_1(project_file("tests/bem/hulme_hemisphere.1"), {rho, g, a});
+  const RadiationData hulme = bem::read_wamit_1(project_file("tests/bem/hulme_hemisphere.1"), {rho, g, a});
   const double table_a[] = {0.863, 0.794, 0.645, 0.538, 0.428, 0.392, 0.388, 0.432, 0.477};
   const double table_b[] = {0.182, 0.279, 0.341, 0.327, 0.248, 0.176, 0.103, 0.022, 0.001};
   double hulme_error = std::max(std::abs(hulme.added_mass_infinite(2, 2) / (rho * volume) - 0.5),

@@ -28,7 +28,7 @@
 // Errors are hydro::DataError naming "<file>:/<variable>", what was found and expected.
 #include <string>
 
-#include "app/bem/bem_arrays.hpp"
+#include "io/bem/bem_arrays.hpp"
 
 namespace heavesim::bem {
 

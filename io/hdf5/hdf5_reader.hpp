@@ -1,5 +1,5 @@
 #pragma once
-// Read-only access to the datasets of an HDF5 file for the BEM readers (BEMIO .h5 and
+// Read-only access to the datasets of an HDF5 file, for the BEM readers (BEMIO .h5 and
 // Capytaine's netCDF4 .nc, which is HDF5 underneath). Every failure is a
 // hydro::DataError whose file is "<path>:<dataset path>": in an HDF5 file the dataset
 // is what a line is in a text file. The message says what was found and what was
@@ -11,29 +11,29 @@
 #include <vector>
 
 #include "hydro/data_error.hpp"
+#include "io/hdf5/hdf5_handle.hpp"
 
-namespace heavesim::bem {
+namespace heavesim::hdf5 {
 
 /// A numeric dataset converted to double, values in C (row-major) order of its shape.
-struct Hdf5Array {
+struct Array {
   std::vector<hsize_t> shape;  // HDF5 (C) order of the dimensions as stored
   std::vector<double> values;
 };
 
-class Hdf5DataFile {
+class Reader {
  public:
   /// Opens `path` read-only; `kind` names the format for errors ("a BEMIO HDF5 file").
-  Hdf5DataFile(std::string path, std::string kind);
-  ~Hdf5DataFile();
-  Hdf5DataFile(const Hdf5DataFile&) = delete;
-  Hdf5DataFile& operator=(const Hdf5DataFile&) = delete;
+  Reader(std::string path, std::string kind);
+  Reader(const Reader&) = delete;
+  Reader& operator=(const Reader&) = delete;
 
   bool has(const std::string& object) const;
 
   /// The dataset's shape, whatever it holds.
   std::vector<hsize_t> shape(const std::string& dataset) const;
   /// A numeric dataset of any stored type, converted to double (NaN and inf kept).
-  Hdf5Array read(const std::string& dataset) const;
+  Array read(const std::string& dataset) const;
   /// A dataset holding exactly one number.
   double read_scalar(const std::string& dataset) const;
   /// A string dataset (fixed or variable length), one entry per element.
@@ -51,13 +51,13 @@ class Hdf5DataFile {
   [[noreturn]] void fail(const std::string& object, const std::string& found, const std::string& expected) const;
 
  private:
-  hid_t open_dataset(const std::string& dataset) const;
+  Handle open_dataset(const std::string& dataset) const;
 
   std::string path_, kind_;
-  hid_t file_ = -1;
+  Handle file_;
 };
 
 /// "(a, b, c)" for a shape, in messages.
 std::string shape_text(const std::vector<hsize_t>& shape);
 
-}  // namespace heavesim::bem
+}  // namespace heavesim::hdf5

@@ -12,7 +12,7 @@
 #include "hydro/bem/bem_data.hpp"
 #include "hydro/data_error.hpp"
 
-namespace heavesim::hydro {
+namespace heavesim::bem {
 
 struct WamitScaling {
   double density = 1025.0;     // rho [kg/m^3]
@@ -20,15 +20,15 @@ struct WamitScaling {
   double length_scale = 1.0;   // ULEN [m]
 };
 
-RadiationData read_wamit_1(const std::string& path, const WamitScaling& scaling = {});
-ExcitationData read_wamit_3(const std::string& path, const WamitScaling& scaling = {});
-Matrix6 read_wamit_hst(const std::string& path, const WamitScaling& scaling = {});
+hydro::RadiationData read_wamit_1(const std::string& path, const WamitScaling& scaling = {});
+hydro::ExcitationData read_wamit_3(const std::string& path, const WamitScaling& scaling = {});
+hydro::Matrix6 read_wamit_hst(const std::string& path, const WamitScaling& scaling = {});
 
 /// basename.1, basename.3 and basename.hst, with their frequencies checked to agree.
-BemData read_wamit(const std::string& basename, const WamitScaling& scaling = {});
+hydro::BemData read_wamit(const std::string& basename, const WamitScaling& scaling = {});
 
 /// Relative tolerance of the symmetry check on A (B is symmetrised unchecked): |X_ij - X_ji| <= tol sqrt(|X_ii X_jj|)
 /// (BEM solutions are symmetric only to discretisation error; the MSS file has 5e-4).
 inline constexpr double bem_symmetry_tolerance = 0.02;
 
-}  // namespace heavesim::hydro
+}  // namespace heavesim::bem

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
-#include "app/commands/commands.hpp"
+#include "cli/commands/commands.hpp"
 #include "validation/checks/validation_suite.hpp"
 
 namespace heavesim {

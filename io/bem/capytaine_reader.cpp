@@ -1,4 +1,4 @@
-#include "app/bem/capytaine_reader.hpp"
+#include "io/bem/capytaine_reader.hpp"
 
 #include <algorithm>
 #include <array>
@@ -26,7 +26,7 @@ class CapytaineFile {
   AxisArray variable(const std::string& name, const std::vector<std::string>& dimensions) const {
     const std::string path = "/" + name;
     const std::vector<std::string> stored = file.dimension_names(path);
-    Hdf5Array array = file.read(path);
+    hdf5::Array array = file.read(path);
     std::vector<int> axes;
     for (const std::string& dimension : dimensions) {
       const auto it = std::find(stored.begin(), stored.end(), dimension);
@@ -41,8 +41,8 @@ class CapytaineFile {
           const std::vector<hsize_t> shape = file.shape("/" + dimension);
           lengths.push_back(shape.empty() ? 1 : shape[0]);
         }
-        file.fail(path, fmt::format("shape {} with dimensions {}", shape_text(array.shape), quoted_list(stored)),
-                  fmt::format("shape {}, the lengths of those dimensions' coordinates", shape_text(lengths)));
+        file.fail(path, fmt::format("shape {} with dimensions {}", hdf5::shape_text(array.shape), quoted_list(stored)),
+                  fmt::format("shape {}, the lengths of those dimensions' coordinates", hdf5::shape_text(lengths)));
       }
     }
     return AxisArray(std::move(array), axes);
@@ -101,14 +101,14 @@ class CapytaineFile {
     return M;
   }
 
-  Hdf5DataFile file;
+  hdf5::Reader file;
 };
 
 }  // namespace
 
 hydro::RadiationData read_capytaine_radiation(const std::string& path, const CaseFluid& fluid) {
   CapytaineFile capytaine(path);
-  const Hdf5DataFile& file = capytaine.file;
+  const hdf5::Reader& file = capytaine.file;
   const std::vector<std::string> dimensions = {"omega", "influenced_dof", "radiating_dof"};
   const AxisArray A = capytaine.variable("added_mass", dimensions);
   const AxisArray B = capytaine.variable("radiation_damping", dimensions);
@@ -153,7 +153,7 @@ hydro::RadiationData read_capytaine_radiation(const std::string& path, const Cas
 
 hydro::ExcitationData read_capytaine_excitation(const std::string& path, const CaseFluid& fluid) {
   const CapytaineFile capytaine(path);
-  const Hdf5DataFile& file = capytaine.file;
+  const hdf5::Reader& file = capytaine.file;
   const std::vector<std::string> dimensions = {"omega", "wave_direction", "influenced_dof", "complex"};
   const AxisArray diffraction = capytaine.variable("diffraction_force", dimensions);
   const AxisArray froude_krylov = capytaine.variable("Froude_Krylov_force", dimensions);

@@ -5,7 +5,7 @@
 #include <exception>
 
 #include "app/case/input_error.hpp"
-#include "app/commands/commands.hpp"
+#include "cli/commands/commands.hpp"
 #include "app/version.hpp"
 #include "kernel/system/ode_system.hpp"
 

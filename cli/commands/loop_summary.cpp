@@ -1,6 +1,6 @@
 #include <fmt/format.h>
 
-#include "app/commands/commands.hpp"
+#include "cli/commands/commands.hpp"
 #include "app/scene/scene.hpp"
 
 namespace heavesim {

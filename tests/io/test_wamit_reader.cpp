@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "hydro/analysis/frequency_domain_rao.hpp"
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 #include "tests/test_support.hpp"
 
 namespace heavesim::hydro {
@@ -17,7 +17,7 @@ constexpr double rho = 1025.0, g = 9.81;
 const std::string semisub = testing::source_path("data/mss_semisub/semisub");
 
 TEST(HydroBem, H7SemisubCoefficientsMatchPublishedNumbers) {
-  const BemData bem = read_wamit(semisub, {rho, g, 1.0});
+  const BemData bem = bem::read_wamit(semisub, {rho, g, 1.0});
   const RadiationData& r = bem.radiation;
   ASSERT_EQ(r.angular_frequencies.size(), 29u);
   EXPECT_NEAR(r.angular_frequencies.front(), 2 * M_PI / 100.0, 1e-12);
@@ -74,8 +74,8 @@ TEST(HydroBem, H7SemisubCoefficientsMatchPublishedNumbers) {
 // against WAMIT's own RAO file semisub.4 (mass 5.19798e7 kg from semisub.frc; heave
 // couples with nothing in head seas for this doubly symmetric hull).
 TEST(HydroBem, H7HeaveRaoFromCoefficientsMatchesWamitRaoFile) {
-  const BemData bem = read_wamit(semisub, {rho, g, 1.0});
-  const ExcitationData rao = read_wamit_3(semisub + ".4", {1.0, 1.0, 1.0});  // nondimensional, heave: m/m
+  const BemData bem = bem::read_wamit(semisub, {rho, g, 1.0});
+  const ExcitationData rao = bem::read_wamit_3(semisub + ".4", {1.0, 1.0, 1.0});  // nondimensional, heave: m/m
   const double mass = 51979800.0;
   ASSERT_EQ(rao.angular_frequencies.size(), bem.radiation.angular_frequencies.size());
   double worst = 0.0;
@@ -99,8 +99,8 @@ TEST(HydroBem, H7HeaveRaoFromCoefficientsMatchesWamitRaoFile) {
 // with ULEN = 1). The difference is held to 1 % of each mode's largest RAO (measured
 // 0.10 % surge ... 0.83 % yaw, whose RAO is small and only excited at 30 and 150 deg).
 TEST(HydroBem, H7CoupledRaosMatchWamitRaoFile) {
-  const BemData bem = read_wamit(semisub, {rho, g, 1.0});
-  const ExcitationData rao = read_wamit_3(semisub + ".4", {1.0, 1.0, 1.0});
+  const BemData bem = bem::read_wamit(semisub, {rho, g, 1.0});
+  const ExcitationData rao = bem::read_wamit_3(semisub + ".4", {1.0, 1.0, 1.0});
   RaoSettings settings;
   settings.mass << 51979800.0, 0, 0, 0, -25989900.0, 0,  //
       0, 51979800.0, 0, 25989900.0, 0, 0,                  //
@@ -126,7 +126,7 @@ TEST(HydroBem, H7CoupledRaosMatchWamitRaoFile) {
 
 TEST(HydroBem, H7HulmeHemisphereTable) {
   const double a = 5.0, volume = 2.0 / 3.0 * M_PI * a * a * a;
-  const RadiationData r = read_wamit_1(testing::source_path("tests/bem/hulme_hemisphere.1"), {rho, g, a});
+  const RadiationData r = bem::read_wamit_1(testing::source_path("tests/bem/hulme_hemisphere.1"), {rho, g, a});
   // A(inf) is exactly half the displaced mass, A(0) = 0.831 of it.
   EXPECT_NEAR(r.added_mass_infinite(2, 2) / (rho * volume), 0.5, 5e-7);
   EXPECT_NEAR(r.added_mass_zero(2, 2) / (rho * volume), 0.831, 5e-7);
@@ -180,7 +180,7 @@ TEST(HydroBem, BadRadiationFilesNameFileAndLine) {
   };
   for (const BadFile& f : files) {
     const std::string path = testing::source_path(std::string("tests/bad_bem/") + f.file);
-    expect_data_error(path, f.line, f.says, [&] { read_wamit_1(path); });
+    expect_data_error(path, f.line, f.says, [&] { bem::read_wamit_1(path); });
   }
 }
 
@@ -194,7 +194,7 @@ TEST(HydroBem, BadExcitationAndHydrostaticFilesNameFileAndLine) {
   };
   for (const BadFile& f : excitation) {
     const std::string path = testing::source_path(std::string("tests/bad_bem/") + f.file);
-    expect_data_error(path, f.line, f.says, [&] { read_wamit_3(path); });
+    expect_data_error(path, f.line, f.says, [&] { bem::read_wamit_3(path); });
   }
   const BadFile hydrostatic[] = {
       {"wrong_columns.hst", 2, "found 4 columns; expected 3 columns"},
@@ -202,12 +202,12 @@ TEST(HydroBem, BadExcitationAndHydrostaticFilesNameFileAndLine) {
   };
   for (const BadFile& f : hydrostatic) {
     const std::string path = testing::source_path(std::string("tests/bad_bem/") + f.file);
-    expect_data_error(path, f.line, f.says, [&] { read_wamit_hst(path); });
+    expect_data_error(path, f.line, f.says, [&] { bem::read_wamit_hst(path); });
   }
   const std::string base = testing::source_path("tests/bad_bem/frequency_mismatch");
-  expect_data_error(base + ".3", 2, "period 6 s", [&] { read_wamit(base); });
+  expect_data_error(base + ".3", 2, "period 6 s", [&] { bem::read_wamit(base); });
   expect_data_error(testing::source_path("tests/bad_bem/no_such_file.1"), 0, "cannot be opened",
-                    [&] { read_wamit_1(testing::source_path("tests/bad_bem/no_such_file.1")); });
+                    [&] { bem::read_wamit_1(testing::source_path("tests/bad_bem/no_such_file.1")); });
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
 #include "app/case/case_definition.hpp"
-#include "app/commands/commands.hpp"
+#include "cli/commands/commands.hpp"
 #include "app/scene/scene.hpp"
 
 namespace heavesim {

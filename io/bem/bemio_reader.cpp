@@ -1,4 +1,4 @@
-#include "app/bem/bemio_reader.hpp"
+#include "io/bem/bemio_reader.hpp"
 
 #include <cmath>
 #include <numeric>
@@ -33,9 +33,9 @@ class BemioFile {
     }
     const std::string w = parameters + "w";
     file.check_units(w, {"rad/s"});
-    const Hdf5Array stored = file.read(w);
+    const hdf5::Array stored = file.read(w);
     if (stored.shape.size() != 1 || stored.values.empty())
-      file.fail(w, "shape " + shape_text(stored.shape), "a list of the Nf wave frequencies [rad/s]");
+      file.fail(w, "shape " + hdf5::shape_text(stored.shape), "a list of the Nf wave frequencies [rad/s]");
     frequencies = stored.values;
     for (std::size_t k = 0; k < frequencies.size(); ++k)
       if (!(frequencies[k] >= 0.0 && std::isfinite(frequencies[k])))
@@ -46,7 +46,7 @@ class BemioFile {
   /// The array `dataset`, expected with shape `expected` (0: 6 Nb, a multiple of 6) as
   /// the spec lists it, or with its dimensions reversed.
   AxisArray oriented(const std::string& dataset, const std::vector<hsize_t>& expected, const char* layout) const {
-    Hdf5Array array = file.read(dataset);
+    hdf5::Array array = file.read(dataset);
     const std::size_t rank = expected.size();
     auto matches = [&](bool reversed) {
       if (array.shape.size() != rank) return false;
@@ -60,7 +60,7 @@ class BemioFile {
     std::iota(axes.begin(), axes.end(), 0);
     if (!matches(false)) {
       if (!matches(true))
-        file.fail(dataset, "shape " + shape_text(array.shape),
+        file.fail(dataset, "shape " + hdf5::shape_text(array.shape),
                   fmt::format("shape {} with Nf = {} (the length of {}w), or its reverse", layout, frequencies.size(),
                               parameters));
       std::reverse(axes.begin(), axes.end());
@@ -85,7 +85,7 @@ class BemioFile {
     return fmt::format("at w = {:g} rad/s (frequency {} of {})", frequencies[k], k + 1, frequencies.size());
   }
 
-  Hdf5DataFile file;
+  hdf5::Reader file;
   std::vector<double> frequencies;  // w [rad/s] in the file's order
   bool nondimensional = true;
   double radiation_factor = 1.0;   // A = factor A_stored, B = factor (w) B_stored
@@ -105,7 +105,7 @@ class BemioFile {
     const std::string T = parameters + "T";
     if (!file.has(T)) return;
     file.check_units(T, {"s"});
-    const Hdf5Array periods = file.read(T);
+    const hdf5::Array periods = file.read(T);
     if (periods.values.size() != frequencies.size())
       file.fail(T, fmt::format("{} periods", periods.values.size()),
                 fmt::format("{} periods, one per frequency of {}w", frequencies.size(), parameters));
@@ -120,7 +120,7 @@ class BemioFile {
 
 hydro::RadiationData read_bemio_radiation(const std::string& path, const CaseFluid& fluid) {
   const BemioFile bemio(path, fluid);
-  const Hdf5DataFile& file = bemio.file;
+  const hdf5::Reader& file = bemio.file;
   const std::string added = coefficients + "added_mass/all", damping = coefficients + "radiation_damping/all",
                     infinite = coefficients + "added_mass/inf_freq";
   if (!file.has(infinite))
@@ -159,12 +159,12 @@ hydro::RadiationData read_bemio_radiation(const std::string& path, const CaseFlu
 
 hydro::ExcitationData read_bemio_excitation(const std::string& path, const CaseFluid& fluid) {
   const BemioFile bemio(path, fluid);
-  const Hdf5DataFile& file = bemio.file;
+  const hdf5::Reader& file = bemio.file;
   const std::string directions = parameters + "wave_dir";
   file.check_units(directions, {"deg", "degrees"});
-  const Hdf5Array headings = file.read(directions);
+  const hdf5::Array headings = file.read(directions);
   if (headings.shape.size() != 1 || headings.values.empty())
-    file.fail(directions, "shape " + shape_text(headings.shape), "a list of the Nh wave headings [deg]");
+    file.fail(directions, "shape " + hdf5::shape_text(headings.shape), "a list of the Nh wave headings [deg]");
   const std::size_t nh = headings.values.size(), nf = bemio.frequencies.size();
   const std::string re = coefficients + "excitation/re", im = coefficients + "excitation/im";
   const AxisArray real = bemio.oriented(re, {6, nh, nf}, fmt::format("(6, Nh = {}, Nf)", nh).c_str());

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "hydro/bem/bem_data.hpp"
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 
 namespace heavesim::bem {
 
@@ -19,8 +19,8 @@ BemFileFormat bem_file_format(const std::string& path);
 
 /// rho and g of `scaling` dimensionalise every format; its length_scale (ULEN) only
 /// WAMIT's files (the HDF5 formats are not scaled by a length).
-hydro::RadiationData read_radiation_file(const std::string& path, const hydro::WamitScaling& scaling);
-hydro::ExcitationData read_excitation_file(const std::string& path, const hydro::WamitScaling& scaling);
-hydro::Matrix6 read_hydrostatic_stiffness_file(const std::string& path, const hydro::WamitScaling& scaling);
+hydro::RadiationData read_radiation_file(const std::string& path, const bem::WamitScaling& scaling);
+hydro::ExcitationData read_excitation_file(const std::string& path, const bem::WamitScaling& scaling);
+hydro::Matrix6 read_hydrostatic_stiffness_file(const std::string& path, const bem::WamitScaling& scaling);
 
 }  // namespace heavesim::bem

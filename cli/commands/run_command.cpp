@@ -11,8 +11,8 @@
 #include <fmt/format.h>
 
 #include "app/case/case_definition.hpp"
-#include "app/commands/commands.hpp"
-#include "app/commands/result_metadata.hpp"
+#include "cli/commands/commands.hpp"
+#include "cli/commands/result_metadata.hpp"
 #include "app/output/recorder.hpp"
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"

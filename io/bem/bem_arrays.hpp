@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bem/hdf5_data_file.hpp"
+#include "io/hdf5/hdf5_reader.hpp"
 #include "hydro/bem/bem_data.hpp"
 
 namespace heavesim::bem {
@@ -21,25 +21,25 @@ struct CaseFluid {
 /// the order of `logical_to_stored` (logical axis a is stored axis logical_to_stored[a]).
 class AxisArray {
  public:
-  AxisArray(Hdf5Array array, const std::vector<int>& logical_to_stored);
+  AxisArray(hdf5::Array array, const std::vector<int>& logical_to_stored);
   double at(std::initializer_list<std::size_t> logical_index) const;
 
  private:
-  Hdf5Array array_;
+  hdf5::Array array_;
   std::vector<std::size_t> strides_;  // per logical axis
 };
 
 /// Fails with the dataset named unless `value` is finite; `what` says which entry.
-void check_finite(const Hdf5DataFile& file, const std::string& dataset, double value, const std::string& what);
+void check_finite(const hdf5::Reader& file, const std::string& dataset, double value, const std::string& what);
 
-/// Checks |M_ij - M_ji| <= tol sqrt(|M_ii M_jj|) (tol = hydro::bem_symmetry_tolerance, as
+/// Checks |M_ij - M_ji| <= tol sqrt(|M_ii M_jj|) (tol = bem::bem_symmetry_tolerance, as
 /// for WAMIT files) and symmetrises M; `at` says where (e.g. "at w = 0.5 rad/s").
-void symmetrise_checked(const Hdf5DataFile& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
+void symmetrise_checked(const hdf5::Reader& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
                         const std::string& at);
 
 /// Orders the finite-frequency entries by ascending frequency and fails (naming
 /// `dataset`) when a frequency repeats.
-void sort_by_frequency(const Hdf5DataFile& file, const std::string& dataset, hydro::RadiationData& data);
-void sort_by_frequency_and_heading(const Hdf5DataFile& file, const std::string& dataset, hydro::ExcitationData& data);
+void sort_by_frequency(const hdf5::Reader& file, const std::string& dataset, hydro::RadiationData& data);
+void sort_by_frequency_and_heading(const hdf5::Reader& file, const std::string& dataset, hydro::ExcitationData& data);
 
 }  // namespace heavesim::bem

@@ -1,4 +1,4 @@
-// BEMIO HDF5 and Capytaine NetCDF4 files (app/bem/): the fixtures of tests/bem/, made
+// BEMIO HDF5 and Capytaine NetCDF4 files (io/bem/): the fixtures of tests/bem/, made
 // from the MSS semi's WAMIT files by tests/bem/make_bem_fixtures.py (its own scalings,
 // layouts and conjugation), read back equal to the WAMIT reader's dimensional data;
 // the heave decay and regular-wave cases give the same history from either format;
@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "app/bem/bem_file.hpp"
+#include "io/bem/bem_file.hpp"
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -19,7 +19,7 @@ namespace heavesim {
 namespace {
 
 constexpr double rho = 1025.0, g = 9.81;
-const hydro::WamitScaling scaling{rho, g, 1.0};
+const bem::WamitScaling scaling{rho, g, 1.0};
 const std::string semisub = testing::source_path("data/mss_semisub/semisub");
 
 /// Largest |a_ij - b_ij| / max|b|.
@@ -36,7 +36,7 @@ struct Differences {
 Differences compare_with_wamit(const std::string& file, bool expect_zero_frequency) {
   SCOPED_TRACE(file);
   Differences d;
-  const hydro::RadiationData wamit = hydro::read_wamit_1(semisub + ".1", scaling);
+  const hydro::RadiationData wamit = bem::read_wamit_1(semisub + ".1", scaling);
   const hydro::RadiationData other = bem::read_radiation_file(file, scaling);
   EXPECT_EQ(other.angular_frequencies.size(), wamit.angular_frequencies.size());
   if (other.angular_frequencies.size() != wamit.angular_frequencies.size()) return d;
@@ -49,7 +49,7 @@ Differences compare_with_wamit(const std::string& file, bool expect_zero_frequen
   EXPECT_EQ(other.has_added_mass_zero, expect_zero_frequency);
   if (expect_zero_frequency) d.zero = relative_difference(other.added_mass_zero, wamit.added_mass_zero);
 
-  const hydro::ExcitationData wamit_x = hydro::read_wamit_3(semisub + ".3", scaling);
+  const hydro::ExcitationData wamit_x = bem::read_wamit_3(semisub + ".3", scaling);
   const hydro::ExcitationData other_x = bem::read_excitation_file(file, scaling);
   EXPECT_EQ(other_x.headings.size(), 4u);  // 0, 30, 90, 180 deg
   EXPECT_EQ(other_x.angular_frequencies, wamit_x.angular_frequencies);
@@ -75,7 +75,7 @@ Differences compare_with_wamit(const std::string& file, bool expect_zero_frequen
   }
   EXPECT_GT(complex_entries, 100);
   d.stiffness = relative_difference(bem::read_hydrostatic_stiffness_file(file, scaling),
-                                    hydro::read_wamit_hst(semisub + ".hst", scaling));
+                                    bem::read_wamit_hst(semisub + ".hst", scaling));
   std::printf("%s: max relative difference A %.2e, B %.2e, A(inf) %.2e, A(0) %.2e, |X| %.2e, C %.2e; "
               "max phase difference %.2e rad\n",
               file.substr(file.find_last_of('/') + 1).c_str(), d.added_mass, d.damping, d.infinite, d.zero,

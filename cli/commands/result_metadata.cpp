@@ -1,4 +1,4 @@
-#include "app/commands/result_metadata.hpp"
+#include "cli/commands/result_metadata.hpp"
 
 #include <openssl/evp.h>
 

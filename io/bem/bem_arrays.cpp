@@ -1,4 +1,4 @@
-#include "app/bem/bem_arrays.hpp"
+#include "io/bem/bem_arrays.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 
 namespace heavesim::bem {
 namespace {
@@ -26,7 +26,7 @@ std::vector<T> permuted(const std::vector<T>& values, const std::vector<std::siz
   return result;
 }
 
-void check_distinct(const Hdf5DataFile& file, const std::string& dataset, const std::vector<double>& sorted,
+void check_distinct(const hdf5::Reader& file, const std::string& dataset, const std::vector<double>& sorted,
                     const char* what, const char* unit) {
   for (std::size_t k = 1; k < sorted.size(); ++k)
     if (sorted[k] == sorted[k - 1])
@@ -35,7 +35,7 @@ void check_distinct(const Hdf5DataFile& file, const std::string& dataset, const 
 
 }  // namespace
 
-AxisArray::AxisArray(Hdf5Array array, const std::vector<int>& logical_to_stored) : array_(std::move(array)) {
+AxisArray::AxisArray(hdf5::Array array, const std::vector<int>& logical_to_stored) : array_(std::move(array)) {
   std::vector<std::size_t> stored_strides(array_.shape.size(), 1);
   for (int axis = static_cast<int>(array_.shape.size()) - 2; axis >= 0; --axis)
     stored_strides[axis] = stored_strides[axis + 1] * array_.shape[axis + 1];
@@ -50,26 +50,26 @@ double AxisArray::at(std::initializer_list<std::size_t> logical_index) const {
   return array_.values[offset];
 }
 
-void check_finite(const Hdf5DataFile& file, const std::string& dataset, double value, const std::string& what) {
+void check_finite(const hdf5::Reader& file, const std::string& dataset, double value, const std::string& what) {
   if (!std::isfinite(value)) file.fail(dataset, fmt::format("{} = {}", what, value), "finite numbers");
 }
 
-void symmetrise_checked(const Hdf5DataFile& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
+void symmetrise_checked(const hdf5::Reader& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
                         const std::string& at) {
   for (int i = 0; i < 6; ++i)
     for (int j = i + 1; j < 6; ++j) {
       const double scale = std::sqrt(std::abs(M(i, i) * M(j, j)));
-      if (std::abs(M(i, j) - M(j, i)) > hydro::bem_symmetry_tolerance * scale + 1e-300)
+      if (std::abs(M(i, j) - M(j, i)) > bem::bem_symmetry_tolerance * scale + 1e-300)
         file.fail(dataset,
                   fmt::format("{}({},{}) = {:.6g} but {}({},{}) = {:.6g} {}", what, i + 1, j + 1, M(i, j), what, j + 1,
                               i + 1, M(j, i), at),
-                  fmt::format("a symmetric matrix (within {} of sqrt({}_ii {}_jj))", hydro::bem_symmetry_tolerance,
+                  fmt::format("a symmetric matrix (within {} of sqrt({}_ii {}_jj))", bem::bem_symmetry_tolerance,
                               what, what));
       M(i, j) = M(j, i) = 0.5 * (M(i, j) + M(j, i));
     }
 }
 
-void sort_by_frequency(const Hdf5DataFile& file, const std::string& dataset, hydro::RadiationData& data) {
+void sort_by_frequency(const hdf5::Reader& file, const std::string& dataset, hydro::RadiationData& data) {
   const std::vector<std::size_t> order = ascending_order(data.angular_frequencies);
   data.angular_frequencies = permuted(data.angular_frequencies, order);
   data.added_mass = permuted(data.added_mass, order);
@@ -77,7 +77,7 @@ void sort_by_frequency(const Hdf5DataFile& file, const std::string& dataset, hyd
   check_distinct(file, dataset, data.angular_frequencies, "frequency", "rad/s");
 }
 
-void sort_by_frequency_and_heading(const Hdf5DataFile& file, const std::string& dataset,
+void sort_by_frequency_and_heading(const hdf5::Reader& file, const std::string& dataset,
                                    hydro::ExcitationData& data) {
   const std::vector<std::size_t> frequencies = ascending_order(data.angular_frequencies);
   const std::vector<std::size_t> headings = ascending_order(data.headings);

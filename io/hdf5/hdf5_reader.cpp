@@ -1,4 +1,4 @@
-#include "app/bem/hdf5_data_file.hpp"
+#include "io/hdf5/hdf5_reader.hpp"
 
 #include <hdf5_hl.h>
 
@@ -8,24 +8,8 @@
 
 #include <fmt/format.h>
 
-namespace heavesim::bem {
+namespace heavesim::hdf5 {
 namespace {
-
-/// Closes an HDF5 handle of any kind when it goes out of scope.
-class Handle {
- public:
-  explicit Handle(hid_t id) : id_(id) {}
-  ~Handle() {
-    if (id_ >= 0) H5Idec_ref(id_);
-  }
-  Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t get() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-
- private:
-  hid_t id_;
-};
 
 std::vector<hsize_t> dataspace_shape(hid_t dataset) {
   const Handle space(H5Dget_space(dataset));
@@ -88,55 +72,51 @@ std::string shape_text(const std::vector<hsize_t>& shape) {
   return text + ")";
 }
 
-Hdf5DataFile::Hdf5DataFile(std::string path, std::string kind) : path_(std::move(path)), kind_(std::move(kind)) {
+Reader::Reader(std::string path, std::string kind) : path_(std::move(path)), kind_(std::move(kind)) {
   // Errors are reported by return codes below, not by HDF5's own stack print.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   if (!std::filesystem::is_regular_file(path_))
     throw hydro::DataError(path_, 0, "a file that cannot be opened", "a readable " + kind_);
   if (H5Fis_hdf5(path_.c_str()) <= 0)
     throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_);
-  file_ = H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-  if (file_ < 0)
+  file_ = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  if (!file_.valid())
     throw hydro::DataError(path_, 0, "an HDF5 file that cannot be opened (truncated or damaged)", kind_ + ", complete");
 }
 
-Hdf5DataFile::~Hdf5DataFile() {
-  if (file_ >= 0) H5Fclose(file_);
-}
-
-void Hdf5DataFile::fail(const std::string& object, const std::string& found, const std::string& expected) const {
+void Reader::fail(const std::string& object, const std::string& found, const std::string& expected) const {
   throw hydro::DataError(path_ + ":" + object, 0, found, expected);
 }
 
-bool Hdf5DataFile::has(const std::string& object) const {
+bool Reader::has(const std::string& object) const {
   // H5Lexists fails (rather than saying no) when an intermediate group is missing, so
   // every prefix is checked in turn.
   for (std::size_t end = object.find('/', 1);; end = object.find('/', end + 1)) {
     const std::string prefix = object.substr(0, end);
-    if (H5Lexists(file_, prefix.c_str(), H5P_DEFAULT) <= 0) return false;
+    if (H5Lexists(file_.get(), prefix.c_str(), H5P_DEFAULT) <= 0) return false;
     if (end == std::string::npos) return true;
   }
 }
 
-hid_t Hdf5DataFile::open_dataset(const std::string& dataset) const {
+Handle Reader::open_dataset(const std::string& dataset) const {
   if (!has(dataset)) fail(dataset, "no such dataset", fmt::format("the dataset {} of {}", dataset, kind_));
-  const hid_t id = H5Dopen2(file_, dataset.c_str(), H5P_DEFAULT);
-  if (id < 0) fail(dataset, "an object that is not a dataset (or cannot be read)", "a dataset");
+  Handle id(H5Dopen2(file_.get(), dataset.c_str(), H5P_DEFAULT));
+  if (!id.valid()) fail(dataset, "an object that is not a dataset (or cannot be read)", "a dataset");
   return id;
 }
 
-std::vector<hsize_t> Hdf5DataFile::shape(const std::string& dataset) const {
-  const Handle id(open_dataset(dataset));
+std::vector<hsize_t> Reader::shape(const std::string& dataset) const {
+  const Handle id = open_dataset(dataset);
   return dataspace_shape(id.get());
 }
 
-Hdf5Array Hdf5DataFile::read(const std::string& dataset) const {
-  const Handle id(open_dataset(dataset));
+Array Reader::read(const std::string& dataset) const {
+  const Handle id = open_dataset(dataset);
   const Handle type(H5Dget_type(id.get()));
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (type_class != H5T_INTEGER && type_class != H5T_FLOAT)
     fail(dataset, "a dataset that does not hold numbers", "a numeric (integer or floating-point) dataset");
-  Hdf5Array array;
+  Array array;
   array.shape = dataspace_shape(id.get());
   array.values.resize(element_count(array.shape));
   if (H5Dread(id.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, array.values.data()) < 0)
@@ -144,14 +124,14 @@ Hdf5Array Hdf5DataFile::read(const std::string& dataset) const {
   return array;
 }
 
-double Hdf5DataFile::read_scalar(const std::string& dataset) const {
-  const Hdf5Array array = read(dataset);
+double Reader::read_scalar(const std::string& dataset) const {
+  const Array array = read(dataset);
   if (array.values.size() != 1) fail(dataset, "shape " + shape_text(array.shape), "a single number");
   return array.values[0];
 }
 
-std::vector<std::string> Hdf5DataFile::read_strings(const std::string& dataset) const {
-  const Handle id(open_dataset(dataset));
+std::vector<std::string> Reader::read_strings(const std::string& dataset) const {
+  const Handle id = open_dataset(dataset);
   const Handle type(H5Dget_type(id.get()));
   if (H5Tget_class(type.get()) != H5T_STRING) fail(dataset, "a dataset that does not hold text", "strings");
   const std::size_t count = element_count(dataspace_shape(id.get()));
@@ -160,9 +140,9 @@ std::vector<std::string> Hdf5DataFile::read_strings(const std::string& dataset) 
   });
 }
 
-std::optional<std::string> Hdf5DataFile::text_attribute(const std::string& object, const std::string& name) const {
-  if (H5Aexists_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
-  const Handle attribute(H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+std::optional<std::string> Reader::text_attribute(const std::string& object, const std::string& name) const {
+  if (H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+  const Handle attribute(H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
   const Handle type(H5Aget_type(attribute.get()));
   if (H5Tget_class(type.get()) != H5T_STRING) fail(object, "a '" + name + "' attribute that is not text", "text");
   const Handle space(H5Aget_space(attribute.get()));
@@ -172,8 +152,8 @@ std::optional<std::string> Hdf5DataFile::text_attribute(const std::string& objec
   return texts.empty() ? std::string() : texts.front();
 }
 
-std::vector<std::string> Hdf5DataFile::dimension_names(const std::string& dataset) const {
-  const Handle id(open_dataset(dataset));
+std::vector<std::string> Reader::dimension_names(const std::string& dataset) const {
+  const Handle id = open_dataset(dataset);
   std::vector<std::string> names(dataspace_shape(id.get()).size());
   for (std::size_t axis = 0; axis < names.size(); ++axis) {
     int index = 0;
@@ -183,10 +163,10 @@ std::vector<std::string> Hdf5DataFile::dimension_names(const std::string& datase
   return names;
 }
 
-void Hdf5DataFile::check_units(const std::string& dataset, const std::vector<std::string>& accepted) const {
+void Reader::check_units(const std::string& dataset, const std::vector<std::string>& accepted) const {
   const std::optional<std::string> units = text_attribute(dataset, "units");
   if (!units || std::find(accepted.begin(), accepted.end(), *units) != accepted.end()) return;
   fail(dataset, fmt::format("units = '{}'", *units), fmt::format("units '{}'", fmt::join(accepted, "' or '")));
 }
 
-}  // namespace heavesim::bem
+}  // namespace heavesim::hdf5

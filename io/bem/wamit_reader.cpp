@@ -1,4 +1,4 @@
-#include "hydro/bem/wamit_reader.hpp"
+#include "io/bem/wamit_reader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,14 @@
 
 #include <fmt/format.h>
 
-namespace heavesim::hydro {
+namespace heavesim::bem {
+
+using hydro::BemData;
+using hydro::ComplexVector6;
+using hydro::DataError;
+using hydro::ExcitationData;
+using hydro::Matrix6;
+using hydro::RadiationData;
 namespace {
 
 struct Row {
@@ -292,4 +299,4 @@ BemData read_wamit(const std::string& basename, const WamitScaling& scaling) {
   return data;
 }
 
-}  // namespace heavesim::hydro
+}  // namespace heavesim::bem
