@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Compensation efficiency against the wave period, for the compensation modes of
-offshore-model.md sec. 5.2 (locked, passive, passive + active), on the H0 rig with the
+docs/physics/drilling-rig.md §6 (locked, passive, passive + active), on the H0 rig with the
 default semi floating in regular head seas (case C3: cases/c3_regular_waves/h0_<mode>.yaml,
 a = 2 m, 600 s, 30 s ramp). Runs heavesim once per mode and period (in parallel, one
 run per core) and takes, over the last 300 s of each record,
@@ -90,7 +90,7 @@ def main():
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     for mode in args.modes:
         ax.plot(args.periods, [table[mode, period] for period in args.periods], marker="o", label=MODES[mode])
-    ax.axhspan(0.85, 0.90, color="C1", alpha=0.12, label="expected passive (offshore-model.md §5.2)")
+    ax.axhspan(0.85, 0.90, color="C1", alpha=0.12, label="expected passive (docs/physics/drilling-rig.md §6)")
     ax.axhline(0.95, color="C2", linestyle=":", label="expected passive + active ≥ 0.95")
     ax.set_xlabel("wave period T [s]")
     ax.set_ylabel("efficiency 1 − σ(z_string) / σ(z_derrick)")

@@ -438,7 +438,7 @@ void read_forces(const NodeReader& section, CaseDefinition& definition, std::set
     def.name = read_unique_name(item, names);
     if (def.type == ForceDefinition::Type::ground_contact) {
       // A unilateral spring-damper on an earth-fixed horizontal surface (the bit on the
-      // formation, offshore-model.md sec. 3.6), preloaded at the initial state.
+      // formation, docs/physics/drilling-rig.md §2), preloaded at the initial state.
       item.expect_map({"name", "type", "body", "point", "stiffness", "damping", "preload", "description"});
       def.body_a = item["body"].text();
       def.spring.stiffness = item["stiffness"].positive_number();

@@ -57,7 +57,7 @@ struct HydroForceDefinition {
   std::optional<double> displaced_volume;  // V [m^3]
   /// Linear hydrostatics: the .hst is WAMIT's "hydrostatic and gravitational" matrix of a
   /// run given the CG (MSS semisub.hst); its gravitational part is taken out because the
-  /// kernel applies the weight at the centre of mass itself (hydro-reference.md sec. 2.2).
+  /// kernel applies the weight at the centre of mass itself (docs/physics/hydrodynamics.md §7).
   bool hst_includes_gravity = false;
   // radiation
   int state_space_order = 12;     // states per realised mode pair

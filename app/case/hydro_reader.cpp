@@ -232,7 +232,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     def.vector = read_vector6(item["coefficients"]);
     if ((def.vector.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
-    // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
+    // Constant added mass (e.g. the fallback A of docs/physics/drilling-rig.md §4) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.
     item.expect_map({"name", "type", "body", "matrix", "description"});
     def.type = HydroForceDefinition::Type::added_mass;

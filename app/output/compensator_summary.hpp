@@ -8,7 +8,7 @@
 // [m] of the stroke's base (the derrick top), z_load that of the moving side (the crown
 // block, rigidly carrying the string on H0), sigma the standard deviation over the
 // window's samples. For a steady sinusoid sigma ratio = amplitude ratio, so this is the
-// regular-wave definition of offshore-model.md sec. 5.2 too (eta = 1 - Z_ds / Z_dt).
+// regular-wave definition of docs/physics/drilling-rig.md §6 too (eta = 1 - Z_ds / Z_dt).
 // Ground contacts (the bit on the formation): the contact force (WOB) over the same
 // window -- mean, standard deviation, range, and the samples off the ground.
 // Written as /summary attributes and printed by `heavesim run`.

@@ -32,7 +32,7 @@ class Recorder {
   double relative_energy_drift() const { return energy_drift_; }
   /// The load a joint carries, |reaction force| [N] (world axes, parent on child): the
   /// structural figures of a design run. For the hook (the top drive to string joint)
-  /// 2 std / mean is the hook-load variation of offshore-model.md §5.2.
+  /// 2 std / mean is the hook-load variation of docs/physics/drilling-rig.md §6.
   struct JointLoad {
     std::string joint;
     double peak = 0.0;           // N, largest over the whole record

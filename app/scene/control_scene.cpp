@@ -188,7 +188,7 @@ void add_compensators(const CaseDefinition& definition, const Model& model, Mult
       std::string advice;
       if (active.active.actuator == ActuatorType::force) {
         advice = "e.g. by pole placement on the carried mass M: kp = M w^2, kd = 2 zeta M w, ki = 0.1 w kp "
-                 "(offshore-model.md §3.5)";
+                 "(docs/physics/compensators.md §11)";
       } else {
         const HydraulicCylinderParameters& c = active.active.hydraulic.cylinder;
         const double omega_h = std::sqrt(c.bulk_modulus * (c.area_a * c.area_a / c.volume_a + c.area_b * c.area_b / c.volume_b) /

@@ -1,5 +1,5 @@
 #pragma once
-// The active heave compensator (offshore-model.md §3.5, hydro-reference.md §4.3): a
+// The active heave compensator (docs/physics/compensators.md §7-11): a
 // sensor, a controller and an actuator acting along a stroke axis, in parallel with
 // the passive compensator.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The simpler actuator for early design (offshore-model.md §3.5): the force follows
+// The simpler actuator for early design (docs/physics/compensators.md §7): the force follows
 // the saturated command through a first-order lag, optionally rate limited,
 //   dF/dt = clamp((u_sat - F) / tau_a, -r_max, r_max),   |u_sat| <= F_max.
 // With tau_a = 0 the force is u_sat itself (no state, no rate limit).

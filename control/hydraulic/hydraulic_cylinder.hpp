@@ -1,5 +1,5 @@
 #pragma once
-// A double-acting hydraulic cylinder with compressible oil (hydro-reference.md §4.3).
+// A double-acting hydraulic cylinder with compressible oil (docs/physics/compensators.md §9).
 // Chamber A grows when the stroke s grows (it pushes the moving side along +axis),
 // chamber B shrinks:
 //   V_A = V_A0 + A_A s,   V_B = V_B0 - A_B s

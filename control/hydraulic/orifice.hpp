@@ -1,5 +1,5 @@
 #pragma once
-// Turbulent orifice flow with a smooth laminar region (hydro-reference.md §4.3).
+// Turbulent orifice flow with a smooth laminar region (docs/physics/compensators.md §8).
 // The sharp-edged orifice law Q = C_d w x sqrt(2 dp / rho) has an infinite slope
 // dQ/d(dp) at dp = 0, which would put an infinite entry in the Newton matrix. Below a
 // transition pressure dp_t the real flow is laminar (linear in dp); one smooth

@@ -1,5 +1,5 @@
 #pragma once
-// A 4/3 servo valve (hydro-reference.md §4.3) with second-order spool dynamics
+// A 4/3 servo valve (docs/physics/compensators.md §8) with second-order spool dynamics
 //   d^2 x/dt^2 = w_v^2 (u - x) - 2 zeta_v w_v dx/dt
 // (x: spool opening, -1 ... 1; u: the saturated command) and orifice flows through
 // four lands: for x > 0 supply P -> chamber A and chamber B -> tank T, for x < 0

@@ -1,6 +1,6 @@
 #pragma once
-// Closed forms of a polytropic gas spring (hydro-reference.md §4.2; offshore-model.md
-// §3.4). A fixed mass of ideal gas in the accumulator and air pressure vessels, volume
+// Closed forms of a polytropic gas spring (docs/physics/compensators.md
+// §2). A fixed mass of ideal gas in the accumulator and air pressure vessels, volume
 // V [m^3], absolute pressure p [Pa], temperature T [K]; a polytropic change keeps
 // p V^n constant (n = 1 isothermal ... 1.4 adiabatic for a diatomic gas).
 #include <cmath>

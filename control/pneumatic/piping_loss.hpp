@@ -1,6 +1,6 @@
 #pragma once
 // Pressure loss in the oil piping between the compensator cylinders and the
-// accumulator (hydro-reference.md §4.2): laminar Hagen-Poiseuille plus a turbulent
+// accumulator (docs/physics/compensators.md §3): laminar Hagen-Poiseuille plus a turbulent
 // loss coefficient,
 //   dp(Q) = R_l Q + K_t Q |Q|,   R_l = 128 mu L / (pi d^4),   K_t = zeta rho / (2 a^2),
 // with a = pi d^2 / 4 the pipe bore area. dp is the drop in the direction of the flow

@@ -1,5 +1,5 @@
 #pragma once
-// The passive pneumatic compensator (offshore-model.md §3.4, hydro-reference.md §4.2):
+// The passive pneumatic compensator (docs/physics/compensators.md §2-6):
 // cylinders of total piston area A whose oil side is connected through piping to an
 // accumulator backed by air pressure vessels holding gas volume V(s) = V0 + A s. When
 // the rods extend (s grows) oil leaves the accumulator and the gas expands.

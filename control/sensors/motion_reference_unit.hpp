@@ -1,5 +1,5 @@
 #pragma once
-// A motion reference unit's heave output (hydro-reference.md §4.3): an MRU integrates
+// A motion reference unit's heave output (docs/physics/compensators.md §10): an MRU integrates
 // its accelerometers twice through a high-pass filter, so its heave is, in effect, the
 // true heave z through
 //   H(s) = s^2 / (s^2 + 2 zeta w_c s + w_c^2)  (second-order high-pass, corner w_c = 2 pi / T_c)

@@ -1,6 +1,6 @@
 #pragma once
 // Stroke end stops: a one-sided penalty spring-damper beyond [lower, upper]
-// (offshore-model.md §3.4: k = 1e8 N/m, c = 1e6 N s/m beyond +-3.81 m). The contact
+// (docs/physics/compensators.md §5: k = 1e8 N/m, c = 1e6 N s/m beyond +-3.81 m). The contact
 // force is max(0, k delta + c d(delta)/dt) for penetration delta > 0: the damper
 // resists entry and exit but never pulls the stroke back into the stop.
 //

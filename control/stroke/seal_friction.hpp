@@ -1,5 +1,5 @@
 #pragma once
-// Seal friction of a cylinder: smoothed Coulomb plus viscous (hydro-reference.md §4.2;
+// Seal friction of a cylinder: smoothed Coulomb plus viscous (docs/physics/compensators.md §4;
 // the tanh form MBARI uses on its motor),
 //   F_f(v) = -(F_c tanh(v / v_s) + c_v v)   [N], opposing the stroke rate v [m/s].
 // The tanh keeps the force smooth through v = 0, so error-controlled integrators do not

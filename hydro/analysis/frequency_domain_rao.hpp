@@ -1,6 +1,6 @@
 #pragma once
 // First-order motion RAOs of one rigid body in the frequency domain (the naval
-// architect's check of BEM data; hydro-reference.md sec. 5b), WAMIT order and
+// architect's check of BEM data; docs/physics/hydrodynamics.md §11), WAMIT order and
 // conventions, motion = Re[xi a e^{i w t}] per unit wave amplitude a:
 //   [-w^2 (M + A(w)) + i w (B(w) + B_ext) + C + C_ext] xi = X(w, beta).
 // M is the body's 6x6 mass matrix about the BEM reference point (WAMIT order, e.g. from

@@ -1,6 +1,6 @@
 #pragma once
 // Dimensional first-order BEM coefficients of one body, in WAMIT's conventions
-// (hydro-reference.md sec. 2.2): modes [surge, sway, heave, roll, pitch, yaw] about the
+// (docs/physics/hydrodynamics.md §1): modes [surge, sway, heave, roll, pitch, yaw] about the
 // BEM reference point (the body frame origin of the BEM run), world axes with z up;
 // harmonic quantities as Re[X e^{+i w t}]; heading beta = direction the waves travel,
 // from +x toward +y; excitation per unit incident-wave amplitude, the wave

@@ -8,7 +8,7 @@
 //    for small rotations its angular part is [roll, pitch, yaw]; f0 is a constant world
 //    vector, applied at the instantaneous body origin like K xi;
 //  * BodyDamping: F = -B_lin v - diag(b_quad) v .* |v| (viscous hull damping, WEC-Sim's
-//    linearDamping and quadDrag, hydro-reference.md sec. 1.1).
+//    linearDamping and quadDrag; docs/physics/hydrodynamics.md §9).
 // Units: K in N/m, N, N m/rad blocks; B_lin in N s/m, N s, N m s/rad; b_quad in
 // N s^2/m^2 (translations) and N m s^2/rad^2 (rotations). No allocation in apply().
 #include "hydro/elements/body_motion.hpp"
@@ -20,7 +20,7 @@ namespace heavesim::hydro {
 /// [N m/rad], with the CG (x_G, y_G, z_G) [m] in the body frame (origin at the BEM
 /// reference point). A .hst from a run given the CG includes it; the kernel applies the
 /// weight m g at the CoM itself (exactly, for any rotation), so a LinearRestoring built
-/// from such a .hst must use C - this (hydro-reference.md sec. 2.2: no double count).
+/// from such a .hst must use C - this (docs/physics/hydrodynamics.md §7: no double count).
 inline Matrix6 wamit_gravitational_stiffness(double mass, const Vector3& center_of_mass, double gravity) {
   Matrix6 C = Matrix6::Zero();
   const double weight = mass * gravity;

@@ -1,5 +1,5 @@
 #pragma once
-// Linear wave excitation on one body (hydro-reference.md sec. 1.1, WEC-Sim):
+// Linear wave excitation on one body (docs/physics/hydrodynamics.md §6; as WEC-Sim):
 //   F(t) = R(t) sum_j Re[ X(w_j, beta_j) a_j e^{i (w_j t + phi_j - k_j (x0 cos beta_j + y0 sin beta_j))} ],
 // WAMIT order [F; M about the body reference point], world axes; (x0, y0) is the
 // body's mean horizontal position (linear theory: the wave is taken at the mean

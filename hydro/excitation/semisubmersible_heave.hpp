@@ -1,6 +1,6 @@
 #pragma once
 // Hand-estimate heave excitation of a twin-pontoon semi-submersible when no BEM data
-// are at hand (offshore-model.md sec. 3.3, "Fallback coefficients"), deep water
+// are at hand (docs/physics/drilling-rig.md §4, "Fallback hydrodynamics"), deep water
 // (k = w^2 / g):
 //   X3(w) = rho g [A_pb e^{-k d_keel} - (A_pb - A_wp) e^{-k d_top}] - A33 w^2 e^{-k d_a}
 // the Froude-Krylov pressure of the incident wave on the horizontal pontoon faces

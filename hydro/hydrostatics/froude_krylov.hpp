@@ -1,6 +1,6 @@
 #pragma once
 // Nonlinear hydrostatic + Froude-Krylov load (WEC-Sim's nonlinearHydro,
-// hydro-reference.md sec. 1.1): the undisturbed pressure of the incident wave,
+// docs/physics/hydrodynamics.md §8): the undisturbed pressure of the incident wave,
 //   p = -rho g z + rho g sum_j R(t) a_j e^{k_j z*} cos(w_j t - k_j (x cos b_j + y sin b_j) + phi_j),
 // integrated over the hull below the instantaneous incident surface z = eta(x, y, t),
 // with Wheeler stretching z* = z - eta (deep water: maps [-inf, eta] onto [-inf, 0], so

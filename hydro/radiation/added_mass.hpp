@@ -1,6 +1,6 @@
 #pragma once
 // Infinite-frequency added mass A(inf) as part of the body's spatial inertia (Cummins
-// 1962: (M + A(inf)) x'' + int K x' + C x = F; hydro-reference.md sec. 1.1): no lagged
+// 1962: (M + A(inf)) x'' + int K x' + C x = F; docs/physics/hydrodynamics.md §2-3): no lagged
 // force, no algebraic loop. BEM data are in WAMIT order [surge, sway, heave, roll,
 // pitch, yaw] = [linear; angular] about the BEM reference point; the kernel wants
 // [angular; linear] (Featherstone) about the body frame origin, body axes

@@ -1,7 +1,7 @@
 #pragma once
 // State-space realisation of the radiation memory, one SISO system per coupled mode
 // pair (i, j):  z' = A z + B v_j,  F_i -= C z,  so that K_ij(t) ~ C e^{A t} B
-// (D = 0 for causality; hydro-reference.md sec. 1.1). Identified from the sampled
+// (D = 0 for causality; docs/physics/hydrodynamics.md §5). Identified from the sampled
 // kernel by the eigensystem realisation algorithm (Kung 1978; Kristiansen et al. 2005;
 // Taghipour et al. 2008): SVD of the Hankel matrix of K(k h), order n kept, then the
 // discrete A_d = e^{A h} taken back to continuous time with the matrix logarithm.

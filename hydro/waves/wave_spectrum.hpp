@@ -1,6 +1,6 @@
 #pragma once
 // One-sided wave elevation spectra S(w) [m^2 s/rad] of angular frequency w [rad/s]
-// (DNV-RP-C205 sec. 3.5.5; hydro-reference.md sec. 1.2). Variance m0 = int S dw, and
+// (DNV-RP-C205 sec. 3.5.5; docs/physics/waves.md §3). Variance m0 = int S dw, and
 // H_m0 = 4 sqrt(m0).
 namespace heavesim::hydro {
 

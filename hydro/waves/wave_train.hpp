@@ -4,7 +4,7 @@
 // measured from +x toward +y (beta = 0: waves travel along +x). Elevation
 //   eta(x, y, t) = R(t) sum_j a_j cos(w_j t - k_j (x cos beta_j + y sin beta_j) + phi_j),
 // i.e. the WAMIT convention eta = Re[a e^{i w t} e^{-i k (x cos b + y sin b)}]
-// (hydro-reference.md sec. 1.2, 2.2): the crest is at the origin at t = 0 when phi = 0.
+// (docs/physics/waves.md §1): the crest is at the origin at t = 0 when phi = 0.
 #include <functional>
 #include <vector>
 

@@ -44,7 +44,7 @@ class BemioFile {
   }
 
   /// The array `dataset`, expected with shape `expected` (0: 6 Nb, a multiple of 6) as
-  /// the spec lists it, or with its dimensions reversed.
+  /// docs/physics/hydrodynamics.md §10 lists it, or with its dimensions reversed.
   AxisArray oriented(const std::string& dataset, const std::vector<hsize_t>& expected, const char* layout) const {
     hdf5::Array array = file.read(dataset);
     const std::size_t rank = expected.size();

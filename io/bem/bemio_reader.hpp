@@ -1,5 +1,5 @@
 #pragma once
-// Reader of WEC-Sim's BEMIO HDF5 files (writeBEMIOH5.m; hydro-reference.md sec. 1.3)
+// Reader of WEC-Sim's BEMIO HDF5 files (writeBEMIOH5.m; docs/physics/hydrodynamics.md §10)
 // into hydro's BEM types: dimensional SI, WAMIT conventions (modes [surge, sway, heave,
 // roll, pitch, yaw] about the BEM reference point, world axes z up, e^{+i w t}, heading
 // = direction of travel from +x toward +y), as the WAMIT readers give them.
@@ -12,7 +12,7 @@
 // With scaled = 1 they are dimensional for the file's /simulation_parameters/rho and g
 // and are rescaled to the case's (A, B by rho_case / rho_file; X, C by
 // rho_case g_case / (rho_file g_file)).
-// Array shapes are read from the file: (6, 6 Nb, Nf) and (6, Nh, Nf) as the spec lists
+// Array shapes are read from the file: (6, 6 Nb, Nf) and (6, Nh, Nf) as hydrodynamics.md §10 lists
 // them (C order), or the reverse (MATLAB's column-major order written unpermuted);
 // square 6 x 6 matrices cannot tell the two apart and are taken as [row][column].
 // Frequencies from /simulation_parameters/w [rad/s]; a w = 0 entry is A(0) and is not

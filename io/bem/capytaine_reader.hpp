@@ -1,6 +1,6 @@
 #pragma once
 // Reader of Capytaine's NetCDF4 datasets (cpt.assemble_dataset, saved with
-// separate_complex_values; hydro-reference.md sec. 2.3) into hydro's BEM types:
+// separate_complex_values; docs/physics/hydrodynamics.md §10) into hydro's BEM types:
 // dimensional SI, WAMIT conventions (modes [surge, sway, heave, roll, pitch, yaw] about
 // the BEM reference point, world axes z up, e^{+i w t}, heading = direction of travel
 // from +x toward +y), as the WAMIT readers give them.

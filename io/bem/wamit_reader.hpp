@@ -1,6 +1,6 @@
 #pragma once
 // Readers of WAMIT's numeric output files (WAMIT User Manual v7, ch. 4), which are
-// nondimensional; dimensionalised with rho, g and ULEN = L (hydro-reference.md sec. 2.2):
+// nondimensional; dimensionalised with rho, g and ULEN = L (docs/physics/hydrodynamics.md §10):
 //   A = rho L^k A_bar,  B = rho w L^k B_bar,  k = 3, 4, 5 (translation-translation,
 //   mixed, rotation-rotation);  C = rho g L^k' C_bar, k' = 2, 3, 4;
 //   X = rho g L^m X_bar, m = 2 (forces), 3 (moments).

@@ -1,7 +1,7 @@
 #pragma once
 // A body point pressing on an earth-fixed horizontal surface z = z_s (world frame, z
-// up): a unilateral spring-damper, the drill bit on the formation of offshore-model.md
-// §3.6 (k_f = 5e7 N/m, c_f = 5e5 N s/m). With the penetration d = z_s - z_p [m] and
+// up): a unilateral spring-damper, the drill bit on the formation of docs/physics/
+// drilling-rig.md §2 (k_f = 5e7 N/m, c_f = 5e5 N s/m). With the penetration d = z_s - z_p [m] and
 // its rate dd/dt = -v_z [m/s], the surface pushes the point up with
 //   F = max(0, k d + c dd/dt)   for d > 0,   F = 0 otherwise
 // (a formation cannot pull the bit back: the damper only resists while the force stays

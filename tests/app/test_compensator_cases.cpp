@@ -2,7 +2,7 @@
 // carries every element channel with units and description, and the compensator
 // headlines; end-stop contacts counted by the summary agree with the recorded stroke;
 // the C2 efficiencies of the passive and active H0 rigs against the linear
-// transmissibility (passive) and offshore-model.md §5.2's expected magnitude (active).
+// transmissibility (passive) and docs/physics/drilling-rig.md §6's target (active).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -108,7 +108,7 @@ TEST(CompensatorCases, PrescribedHeaveEfficiencyOfThePassiveAndActiveH0) {
     if (std::string(mode) == "passive")
       EXPECT_NEAR(efficiency, expected, 0.005) << "linear transmissibility " << expected;  // 1 m: mildly nonlinear
     else
-      EXPECT_GE(efficiency, 0.95) << "offshore-model.md §5.2: passive + active >= 0.95";
+      EXPECT_GE(efficiency, 0.95) << "docs/physics/drilling-rig.md §6: passive + active >= 0.95";
     std::filesystem::remove(output);
   }
 }

@@ -1,6 +1,6 @@
-// The drilling rig floating on waves (offshore-model.md §3.2-3.3, §3.6, §5.2) through
+// The drilling rig floating on waves (docs/physics/drilling-rig.md §2-4, §6) through
 // the application, against numbers the code does not compute:
-//   - the default semi's heave RAO vs the §3.3 table and vs the 1-DoF closed form
+//   - the default semi's heave RAO vs the drilling-rig.md §4 table and vs the 1-DoF closed form
 //     |X3| / |C33 - (m + A33) w^2 + i B33 w| evaluated here;
 //   - C0: the stroke stays at mid-stroke and the joints carry the hand-summed weights;
 //   - C3 passive: the crown block's heave against the gas spring's transmissibility
@@ -25,7 +25,7 @@ namespace heavesim {
 namespace {
 
 constexpr double g = 9.81, rho = 1025.0, rho_steel = 7850.0;
-constexpr double m_crown = 30e3, m_tb = 25e3, m_td = 45e3, m_string = 190e3;  // kg, offshore-model.md §1.3
+constexpr double m_crown = 30e3, m_tb = 25e3, m_td = 45e3, m_string = 190e3;  // kg, docs/physics/drilling-rig.md §1
 const double string_buoyancy = rho / rho_steel * m_string * g;              // N
 
 using testing::run_case;
@@ -70,7 +70,7 @@ TEST(RigWaves, EveryCaseOfTheMatrixChecks) {
   }
 }
 
-// The §3.3 table was computed from the fallback coefficients with m = Delta (no rig):
+// The drilling-rig.md §4 table was computed from the fallback coefficients with m = Delta (no rig):
 // semi_rao.yaml. Tolerances: 0.01 against the table (its last digit; the formula
 // rounds to it within 0.006, e.g. 0.4648 at 14 s is printed 0.47), and 1 % against
 // the closed form evaluated here (RK4 at 0.05 s is far finer than that; the residual
@@ -91,7 +91,7 @@ TEST(RigWaves, DefaultSemiHeaveRaoMatchesTheFallbackTable) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     H5File file(output);
     const double rao = harmonic_amplitude(file.read("/time"), column(file.read("/bodies/platform/position"), 2), w, 500.0);
-    EXPECT_NEAR(rao, table[n], 0.01) << "T = " << T << " s, offshore-model.md §3.3 table";
+    EXPECT_NEAR(rao, table[n], 0.01) << "T = " << T << " s, docs/physics/drilling-rig.md §4 table";
     EXPECT_NEAR(rao, closed_form, 0.01 * closed_form) << "T = " << T << " s, 1-DoF closed form";
     std::filesystem::remove(output);
   }
@@ -180,7 +180,7 @@ TEST(RigWaves, C3PassiveEfficiencyIsTheGasSpringTransmissibility) {
     const double expected = 1.0 - std::abs(k_gas / (k_gas - M * w * w));
     EXPECT_NEAR(1.0 - crown / derrick, expected, 0.005) << case_file << ", T = " << T << " s";
     if (T == 10.0 && std::string(case_file).find("mss") == std::string::npos) {
-      EXPECT_NEAR(derrick, 0.75, 0.03) << "offshore-model.md §5.2: platform heave ~0.75 m at a = 2 m";
+      EXPECT_NEAR(derrick, 0.75, 0.03) << "docs/physics/drilling-rig.md §6: platform heave ~0.75 m at a = 2 m";
     }
     std::filesystem::remove(output);
   }

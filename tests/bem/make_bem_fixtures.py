@@ -8,9 +8,9 @@ ones of tests/bad_bem/ from the MSS semi's WAMIT files (data/mss_semisub/semisub
 The conversion is done here, independently of the C++ readers, so that the tests that
 compare the readers against the WAMIT reader check both the scalings and the layouts:
 
-  WAMIT (ULEN = 1 m, hydro-reference.md sec. 2.2):  A = rho A_bar, B = rho w B_bar,
+  WAMIT (ULEN = 1 m, docs/physics/hydrodynamics.md §10):  A = rho A_bar, B = rho w B_bar,
       X = rho g X_bar, C = rho g C_bar, modes 1..6 = surge .. yaw, e^{+i w t}.
-  BEMIO (hydro-reference.md sec. 1.3): stored nondimensional, A/rho, B/(rho w),
+  BEMIO (docs/physics/hydrodynamics.md §10): stored nondimensional, A/rho, B/(rho w),
       X/(rho g), C/(rho g), scaled = 0; shapes (6, 6 Nb, Nf), (6, Nh, Nf) in C order
       (the MATLAB-permuted layout of writeBEMIOH5.m); headings in degrees.
   Capytaine (cpt.assemble_dataset + separate_complex_values, written as netCDF4):

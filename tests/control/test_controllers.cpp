@@ -22,7 +22,7 @@
 namespace heavesim {
 namespace {
 
-/// offshore-model.md §3.5 defaults: pole placement on 290 t, w_c = 2 rad/s, zeta = 0.8.
+/// docs/physics/drilling-rig.md §5 defaults: pole placement on 290 t, w_c = 2 rad/s, zeta = 0.8.
 ActiveCompensatorParameters default_force_control() {
   ActiveCompensatorParameters p;
   const double mass = 290e3, w = 2.0, zeta = 0.8;

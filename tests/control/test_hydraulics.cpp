@@ -70,7 +70,7 @@ ActiveCompensatorParameters hydraulic_actuator() {
 
 TEST(HydraulicCylinder, PressureRatesSpoolAndForceAsWrittenByHand) {
   // base_and_load: the base heaves, the load strokes on it; the element's rates
-  // against the equations of hydro-reference.md §4.3 written out here.
+  // against the equations of docs/physics/compensators.md §8-9 written out here.
   auto model = validation::base_and_load(1e6, 3e5);
   Data data(*model);
   VectorX q(2), v(2);

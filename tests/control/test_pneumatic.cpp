@@ -32,7 +32,7 @@ struct Placed {
 
 TEST(Pneumatic, PolytropicPressureAndForce) {
   Placed placed;
-  PneumaticParameters p;  // offshore-model.md §3.4 defaults
+  PneumaticParameters p;  // docs/physics/drilling-rig.md §5 defaults
   p.exponent_compression = p.exponent_expansion = 1.3;
   const PneumaticCompensator compensator("pn", placed.axis(), p);
   for (double s : {-3.5, -1.0, 0.0, 0.7, 3.5}) {
@@ -61,7 +61,7 @@ TEST(Pneumatic, StiffnessMatchesDerivativeOfForceAndTheDefaultRig) {
     const double derivative = -(force(s + h) - force(s - h)) / (2 * h);  // restoring: dF/ds < 0
     EXPECT_NEAR(k, derivative, 1e-6 * k) << "s = " << s;
   }
-  // offshore-model.md §3.4: k_pn ~ 10.5 kN/m, T_n ~ 33 s with 290 t, swings ~ +-1.6 %.
+  // docs/physics/drilling-rig.md §5: k_pn ~ 10.5 kN/m, T_n ~ 33 s with 290 t, swings ~ +-1.6 %.
   placed.at(0.0, 0.0);
   const double k0 = compensator.evaluate(0.0, *placed.model, placed.data, VectorX(), nullptr).stiffness;
   EXPECT_NEAR(k0, 10.5e3, 0.05e3);

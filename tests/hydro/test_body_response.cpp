@@ -88,7 +88,7 @@ TEST(HydroBodyResponse, H3HeaveFreeDecayMatchesClosedForm) {
   const RadiationData& r = semisub().radiation;
   const double A33 = r.added_mass_zero(2, 2), C33 = semisub().hydrostatic_stiffness(2, 2);
   const double wn = std::sqrt(C33 / (mass + A33));
-  EXPECT_NEAR(2 * M_PI / wn, 21.9, 0.1);  // hydro-reference.md sec. 3.2: about 21.9-22.0 s
+  EXPECT_NEAR(2 * M_PI / wn, 21.9, 0.1);  // docs/physics/hydrodynamics.md §12: about 21.9 s
   for (double zeta : {0.0, 0.05}) {
     auto model = heaving_semisub(r.added_mass_zero);
     MultibodySystem system(model);

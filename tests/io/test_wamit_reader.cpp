@@ -1,5 +1,5 @@
 // BEM readers: H7 (the MSS semi's WAMIT files against the numbers of
-// hydro-reference.md sec. 3.2 and semisub.out, a Hulme hemisphere table written as a
+// docs/physics/hydrodynamics.md §12 and semisub.out, a Hulme hemisphere table written as a
 // WAMIT .1 with ULEN = 5 m), the frequency-domain heave RAO against WAMIT's own .4,
 // and one test per malformed file in tests/bad_bem/ (file and line in the message).
 #include <gtest/gtest.h>
@@ -23,7 +23,7 @@ TEST(HydroBem, H7SemisubCoefficientsMatchPublishedNumbers) {
   EXPECT_NEAR(r.angular_frequencies.front(), 2 * M_PI / 100.0, 1e-12);
   EXPECT_NEAR(r.angular_frequencies.back(), 2 * M_PI / 4.5, 1e-12);
   ASSERT_TRUE(r.has_added_mass_zero);
-  // hydro-reference.md sec. 3.2: A33 = 6.65e7 kg (w -> 0), 5.93e7 kg (w -> inf).
+  // docs/physics/hydrodynamics.md §12: A33 = 6.65e7 kg (w -> 0), 5.93e7 kg (w -> inf).
   EXPECT_NEAR(r.added_mass_zero(2, 2), 6.486900e4 * rho, 1e-9 * 6.65e7);
   EXPECT_NEAR(r.added_mass_zero(2, 2), 6.65e7, 0.005e7);
   EXPECT_NEAR(r.added_mass_infinite(2, 2), 5.93e7, 0.005e7);

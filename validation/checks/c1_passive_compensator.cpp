@@ -3,7 +3,7 @@
 // c1_passive_compensator.yaml), small amplitude; the simulated compensation efficiency
 // 1 - |X / Z| against the linear transmissibility of an undamped spring-mass,
 //   X / Z = k / (k - M w^2),  k = n p0 A^2 / V0,  p0 = p_atm + M g / A (static balance),
-// for heave periods of 8, 10, 12 and 14 s (offshore-model.md §5.2, C2).
+// for heave periods of 8, 10, 12 and 14 s (docs/physics/compensators.md §6; drilling-rig.md §6, C2).
 #include <cmath>
 
 #include <Eigen/QR>

@@ -1,7 +1,7 @@
 // C2: static equilibrium of the rig. H0 (rigid and 4-segment elastic string) and H0b
 // (cases/rig) with the passive compensator, gas pressure from static balance, the
 // platform held still; over 100 s
-// every joint must carry exactly the weight hanging below it (offshore-model.md §5.2:
+// every joint must carry exactly the weight hanging below it (docs/physics/drilling-rig.md §6:
 // 1.62 MN at the top-drive/string joint, 2.06 MN at the travelling-block/top-drive
 // joint, 2.60 MN on the compensator), computed here from the masses and the string's
 // buoyancy, and the stroke must not drift.

@@ -1,4 +1,4 @@
-// H1-H7: the hydro library (docs/validation.md, shared/spec/validation.md "Hydro").
+// H1-H7: the hydro library (docs/validation.md; the models: docs/physics/hydrodynamics.md).
 // The same comparisons as tests/hydro, in the suite's table form: hydrostatics by
 // clipping against closed forms and WAMIT's semisub.out, heave decay and regular-wave
 // RAO through the kernel against closed forms and the frequency domain, the
@@ -239,7 +239,7 @@ std::vector<ValidationRow> check_h7_bem_readers() {
   const BemData& bem = semisub();
   const RadiationData& r = bem.radiation;
   std::vector<ValidationRow> rows;
-  const std::string subject = "MSS semi WAMIT .1/.3/.hst vs hydro-reference.md sec. 3.2";
+  const std::string subject = "MSS semi WAMIT .1/.3/.hst vs semisub.out digits";
   rows.push_back({"H7", subject, "A33(0) vs 6.65e7 kg, relative", relative(r.added_mass_zero(2, 2), 6.65e7), 0.001});
   rows.push_back({"H7", subject, "A33(inf) vs 5.93e7 kg, relative", relative(r.added_mass_infinite(2, 2), 5.93e7), 0.001});
   rows.push_back({"H7", subject, "C33 vs 9.785e6 N/m, relative", relative(bem.hydrostatic_stiffness(2, 2), 9.785e6), 0.0005});

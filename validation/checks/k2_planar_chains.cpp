@@ -1,5 +1,5 @@
 // K2: planar chains of n = 2, 3, 5 uniform rods at 1000 random states against the
-// n-link oracle of offshore-model.md sec. 4.2 (absolute angles, Lagrange form).
+// n-link oracle of docs/physics/multibody.md §9 (absolute angles, Lagrange form).
 #include <random>
 
 #include <fmt/format.h>

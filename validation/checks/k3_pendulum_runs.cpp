@@ -1,4 +1,4 @@
-// K3: runs of the validation pendulums (offshore-model.md sec. 4.2, V1-V4) through the
+// K3: runs of the validation pendulums (docs/physics/multibody.md §9, V1-V4) through the
 // whole application path (YAML case -> scene -> integrator) against the planar-chain
 // oracle integrated by an independent high-order integrator in absolute angles.
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // Exact equations of a planar chain of links hanging from a ground pin, in ABSOLUTE
 // angles theta_i (from the downward vertical, positive counter-clockwise about +Y),
-// written from the Lagrangian directly (offshore-model.md sec. 4.2). Independent of
+// written from the Lagrangian directly (docs/physics/multibody.md §9). Independent of
 // the kernel: no spatial algebra, different coordinates.
 //
 // Link i: pin-to-pin length L_i, mass m_i, CoM at distance a_i from its upper pin,
