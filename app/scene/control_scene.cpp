@@ -14,10 +14,16 @@ namespace {
 /// An InputError at forces[name].<field>, at that key's position when known.
 InputError compensator_error(const CaseDefinition& definition, const std::string& name, const std::string& field,
                              const std::string& found, const std::string& expected) {
-  const auto& fields = definition.force_field_locations.at(name);
-  auto it = fields.find(field);
-  const SourceLocation location = it != fields.end() ? it->second : fields.at("name");
-  return InputError(location, definition.force_paths.at(name) + "." + field, found, expected);
+  return definition.item_error(name, field, found, expected);
+}
+
+/// The case key (under the compensator's path) of each parameter control/ checks.
+const std::map<std::string, std::string>& compensator_keys() {
+  static const std::map<std::string, std::string> keys{
+      {"joint", "stroke.joint"},
+      {"acceleration_feedforward", "controller.acceleration_feedforward"},
+      {"max_rate", "actuator.max_rate"}};
+  return keys;
 }
 
 BodyPoint resolve_point(const CaseDefinition& definition, const Model& model, const std::string& name,
@@ -33,13 +39,10 @@ StrokeAxis resolve_stroke(const CaseDefinition& definition, const Model& model, 
   const StrokeDefinition& stroke = def.stroke;
   if (stroke.joint_form()) {
     const int joint = model.joint_index(stroke.joint);
-    if (joint < 1 || !std::holds_alternative<PrismaticJoint>(model.joints[joint].type))
-      throw compensator_error(definition, def.name, "stroke.joint",
-                              joint < 1 ? "'" + stroke.joint + "', which is not a joint"
-                                        : "'" + stroke.joint + "', a " + joint_type_name(model.joints[joint].type) +
-                                              " joint",
+    if (joint < 1)
+      throw compensator_error(definition, def.name, "stroke.joint", "'" + stroke.joint + "', which is not a joint",
                               "the name of a prismatic joint (the stroke is its coordinate)");
-    return StrokeAxis::on_joint(model, joint, stroke.mid_stroke);
+    return StrokeAxis::on_joint(model, joint, stroke.mid_stroke);  // ParameterError("joint") unless prismatic
   }
   const BodyPoint base = resolve_point(definition, model, def.name, "stroke.base", stroke.base_body, stroke.base_point);
   const BodyPoint moving =
@@ -121,40 +124,44 @@ void add_compensators(const CaseDefinition& definition, const Model& model, Mult
   };
   std::vector<Built> built;
   for (const CompensatorDefinition& def : definition.compensators) {
-    const StrokeAxis axis = resolve_stroke(definition, model, def);
-    AppliedForces unit_force(model);
-    apply_stroke_force(axis, model, data, 1.0, unit_force);
-    const VectorX unit = generalized_force(model, data, unit_force);
-    const double initial_stroke = stroke_motion(axis, model, data).stroke;
-    // Mass seen along the stroke with every other coordinate held: Q^T M Q / |Q|^4
-    // (M_jj for a joint-form stroke).
-    const double apparent_mass = unit.dot(mass * unit) / std::pow(unit.squaredNorm(), 2);
-    Built b{&def, def.pneumatic, def.active, apparent_mass};
+    try {
+      const StrokeAxis axis = resolve_stroke(definition, model, def);
+      AppliedForces unit_force(model);
+      apply_stroke_force(axis, model, data, 1.0, unit_force);
+      const VectorX unit = generalized_force(model, data, unit_force);
+      const double initial_stroke = stroke_motion(axis, model, data).stroke;
+      // Mass seen along the stroke with every other coordinate held: Q^T M Q / |Q|^4
+      // (M_jj for a joint-form stroke).
+      const double apparent_mass = unit.dot(mass * unit) / std::pow(unit.squaredNorm(), 2);
+      Built b{&def, def.pneumatic, def.active, apparent_mass};
 
-    if (def.type == CompensatorDefinition::Type::pneumatic) {
-      const EndStops& stops = def.pneumatic.end_stops;
-      if (initial_stroke < stops.lower || initial_stroke > stops.upper)
-        throw compensator_error(definition, def.name, "end_stops",
-                                fmt::format("an initial stroke of {:g} m, outside the end stops [{:g}, {:g}] m",
-                                            initial_stroke, stops.lower, stops.upper),
-                                "an initial state between the end stops");
-      if (def.balance_pressure)
-        b.pneumatic = balanced(definition, def, static_load(model, data, system, t0, q0, unit), initial_stroke);
-      system.add_force_element(std::make_unique<PneumaticCompensator>(def.name, axis, b.pneumatic));
-    } else {
-      ActiveCompensatorParameters& p = b.active;
-      p.controlled_point =
-          def.controlled_body
-              ? resolve_point(definition, model, def.name, "measurement.controlled_point", *def.controlled_body,
-                              def.controlled_point)
-              : (axis.joint_form() ? BodyPoint{axis.joint, model.links[axis.joint].X_link_body.translation()}
-                                   : axis.moving);
-      p.controlled_height = p.controlled_point.position_world(data).z();
-      p.base_height = base_motion(axis, model, data).position_world.z();
-      p.initial_stroke = initial_stroke;
-      system.add_force_element(std::make_unique<ActiveCompensator>(def.name, axis, p));
+      if (def.type == CompensatorDefinition::Type::pneumatic) {
+        const EndStops& stops = def.pneumatic.end_stops;
+        if (initial_stroke < stops.lower || initial_stroke > stops.upper)
+          throw compensator_error(definition, def.name, "end_stops",
+                                  fmt::format("an initial stroke of {:g} m, outside the end stops [{:g}, {:g}] m",
+                                              initial_stroke, stops.lower, stops.upper),
+                                  "an initial state between the end stops");
+        if (def.balance_pressure)
+          b.pneumatic = balanced(definition, def, static_load(model, data, system, t0, q0, unit), initial_stroke);
+        system.add_force_element(std::make_unique<PneumaticCompensator>(def.name, axis, b.pneumatic));
+      } else {
+        ActiveCompensatorParameters& p = b.active;
+        p.controlled_point =
+            def.controlled_body
+                ? resolve_point(definition, model, def.name, "measurement.controlled_point", *def.controlled_body,
+                                def.controlled_point)
+                : (axis.joint_form() ? BodyPoint{axis.joint, model.links[axis.joint].X_link_body.translation()}
+                                     : axis.moving);
+        p.controlled_height = p.controlled_point.position_world(data).z();
+        p.base_height = base_motion(axis, model, data).position_world.z();
+        p.initial_stroke = initial_stroke;
+        system.add_force_element(std::make_unique<ActiveCompensator>(def.name, axis, p));
+      }
+      built.push_back(b);
+    } catch (const ParameterError& error) {
+      throw to_input_error(definition, definition.item_paths.at(def.name), error, compensator_keys());
     }
-    built.push_back(b);
   }
 
   // Closed-loop stability of every active compensator with the compensators on its stroke.
