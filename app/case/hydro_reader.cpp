@@ -1,6 +1,7 @@
 #include "app/case/hydro_reader.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 
@@ -109,7 +110,7 @@ void read_waves(const NodeReader& reader, CaseDefinition& definition) {
     // The number of components and the band are hydro::irregular_sea's rules, checked
     // when the scene builds the sea.
     if (auto components = reader.optional("components"))
-      sea.num_components = static_cast<int>(std::clamp<long>(components->integer(), -1, 1000000000));
+      sea.num_components = static_cast<int>(std::clamp<long>(components->integer(), INT_MIN, INT_MAX));
     if (auto seed = reader.optional("seed")) {
       const long s = seed->integer();
       if (s < 0) seed->fail(fmt::format("{}", s), "a seed >= 0");
@@ -162,18 +163,19 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
                      "modes", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
-    if (auto memory = item.optional("memory")) def.convolution = memory->choice({"state_space", "convolution"}) == "convolution";
+    hydro::RadiationMemorySettings& memory = def.memory;
+    if (auto kind = item.optional("memory")) memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
     // The order's range and the kernel's sampling are hydro's rules (state_space.hpp,
     // retardation_kernel.hpp), checked when the scene builds the element.
-    if (auto order = item.optional("state_space_order")) def.state_space_order = static_cast<int>(order->integer());
-    if (auto duration = item.optional("kernel_duration")) def.kernel_duration = duration->positive_number();
-    if (auto step = item.optional("kernel_step")) def.kernel_step = step->positive_number();
+    if (auto order = item.optional("state_space_order")) memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
+    if (auto duration = item.optional("kernel_duration")) memory.kernel_duration = duration->positive_number();
+    if (auto step = item.optional("kernel_step")) memory.kernel_step = step->positive_number();
     if (auto modes = item.optional("modes")) {
-      def.modes.fill(false);
+      memory.modes.fill(false);
       for (const NodeReader& mode : modes->items()) {
         const long m = mode.integer();
         if (m < 1 || m > 6) mode.fail(fmt::format("{}", m), "a WAMIT mode 1..6 (surge, sway, heave, roll, pitch, yaw)");
-        def.modes[m - 1] = true;
+        memory.modes[m - 1] = true;
       }
     }
   } else if (type == "wave_excitation") {

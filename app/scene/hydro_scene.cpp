@@ -8,15 +8,11 @@
 
 #include "app/bem/bem_file.hpp"
 #include "app/scene/recorded_load.hpp"
-#include "hydro/elements/linear_body_loads.hpp"
+#include "hydro/elements/element_factories.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
-#include "hydro/elements/radiation_convolution.hpp"
-#include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
 #include "hydro/excitation/semisubmersible_heave.hpp"
 #include "hydro/radiation/added_mass.hpp"
-#include "hydro/radiation/retardation_kernel.hpp"
-#include "hydro/radiation/state_space.hpp"
 #include "hydro/waves/wave_spectrum.hpp"
 
 namespace heavesim {
@@ -60,11 +56,6 @@ const BodyDefinition* find_body(const CaseDefinition& definition, const std::str
   for (const BodyDefinition& b : definition.bodies)
     if (b.name == body) return &b;
   return nullptr;
-}
-
-double body_mass(const CaseDefinition& definition, const std::string& body) {
-  const BodyDefinition* b = find_body(definition, body);
-  return b ? b->inertia.mass() : 0.0;
 }
 
 }  // namespace
@@ -159,52 +150,21 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
           if (force.nonlinear) {
             element = std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
           } else {
-            // F = f0 - C xi about the body frame origin; f0 = rho g V e_z, by default the
-            // body's weight so that the reference pose (the world frame) is the equilibrium.
-            hydro::Vector6 buoyancy = hydro::Vector6::Zero();
-            buoyancy[2] = force.displaced_volume ? rho * g * *force.displaced_volume : body_mass(definition, force.body) * g;
-            hydro::Matrix6 stiffness = data.stiffness.at(force.name);
-            if (force.hst_includes_gravity)  // the kernel's weight at the CoM provides this part
-              if (const BodyDefinition* body = find_body(definition, force.body))
-                stiffness -= hydro::wamit_gravitational_stiffness(body->inertia.mass(), body->inertia.com(), g);
-            element = std::make_unique<hydro::LinearRestoring>(force.name, link, stiffness, buoyancy, Transform::Identity());
+            const BodyDefinition& body = *find_body(definition, force.body);  // the model has it
+            hydro::LinearHydrostaticsSettings settings;
+            settings.stiffness = data.stiffness.at(force.name);
+            settings.stiffness_includes_gravity = force.hst_includes_gravity;
+            settings.displaced_volume = force.displaced_volume;
+            settings.body_mass = body.inertia.mass();
+            settings.center_of_mass = body.inertia.com();
+            settings.water_density = rho;
+            settings.gravity = g;
+            element = hydro::linear_hydrostatics(force.name, link, settings);
           }
           break;
-        case Type::radiation: {
-          const hydro::RadiationData& radiation = data.radiation.at(force.name);
-          hydro::check_state_space_order(force.state_space_order);  // also when the memory is a convolution
-          hydro::RetardationKernel kernel =
-              hydro::retardation_kernel(radiation, force.kernel_duration, force.kernel_step);
-          if (force.convolution) {
-            // Only the pairs of the modes asked for (a body held to fewer degrees of freedom).
-            for (hydro::Matrix6& K : kernel.values)
-              for (int i = 0; i < 6; ++i)
-                for (int j = 0; j < 6; ++j)
-                  if (!force.modes[i] || !force.modes[j]) K(i, j) = 0.0;
-            element = std::make_unique<hydro::RadiationConvolution>(force.name, link, std::move(kernel));
-            break;
-          }
-          // Pair (i, j) is realised when both modes are asked for and its kernel is not
-          // negligible against its own diagonal: max|K_ij| > 1e-3 sqrt(max|K_ii| max|K_jj|)
-          // (dimensionally consistent, unlike a comparison across translation and rotation).
-          hydro::Matrix6 largest = hydro::Matrix6::Zero();
-          for (const hydro::Matrix6& K : kernel.values) largest = largest.cwiseMax(K.cwiseAbs());
-          std::vector<hydro::ModePairStateSpace> systems;
-          for (int i = 0; i < 6; ++i)
-            for (int j = 0; j < 6; ++j)
-              if (force.modes[i] && force.modes[j] && largest(i, j) > 0.0 &&
-                  largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
-                systems.push_back(hydro::realize_kernel_entry(kernel, i, j, force.state_space_order));
-          for (const hydro::ModePairStateSpace& realised : systems)
-            if (!realised.stable)  // an unstable memory would grow without bound in the run
-              throw hydro_error(definition, force.name, "state_space_order",
-                                fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
-                                            realised.force_mode + 1, realised.velocity_mode + 1,
-                                            force.state_space_order, realised.r_squared),
-                                "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
-          element = std::make_unique<hydro::RadiationMemory>(force.name, link, std::move(systems));
+        case Type::radiation:
+          element = hydro::radiation_memory(force.name, link, data.radiation.at(force.name), force.memory);
           break;
-        }
         case Type::wave_excitation:
           element = std::make_unique<hydro::WaveExcitation>(force.name, link, data.excitation.at(force.name), *waves);
           recorded_waves = waves;
