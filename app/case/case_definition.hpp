@@ -12,6 +12,7 @@
 #include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim {
 
@@ -80,12 +81,23 @@ struct CaseDefinition {
   SolverSettings solver;
   OutputSettings output;
 
-  /// Source positions of bodies[i] / joints[i] and of their fields, by name.
-  std::map<std::string, std::map<std::string, SourceLocation>> body_field_locations;
-  std::map<std::string, std::map<std::string, SourceLocation>> joint_field_locations;
-  std::map<std::string, std::map<std::string, SourceLocation>> constraint_field_locations;  // loop joints too
-  std::map<std::string, std::map<std::string, SourceLocation>> force_field_locations;
-  std::map<std::string, std::string> body_paths, joint_paths, constraint_paths, force_paths;
+  /// Where every key of the resolved case came from, by key path ("joints[2].axis",
+  /// "forces[0].stroke.joint", "waves.hs"): the one source map into which errors found
+  /// after loading (model, scene, domain rules) point.
+  std::map<std::string, SourceLocation> sources;
+  /// The key path of each named item: bodies by name; joints, loop joints, constraints,
+  /// drivers and forces (one name space) by name.
+  std::map<std::string, std::string> body_paths, item_paths;
+
+  /// The position of `key_path`; for a key the case does not give, that of the nearest
+  /// enclosing item (its `name` key, else the item itself); else the case file.
+  SourceLocation location_of(const std::string& key_path) const;
+  /// An InputError at `key_path` (position from location_of).
+  InputError error_at(const std::string& key_path, const std::string& found, const std::string& expected) const;
+  /// An InputError at `field` (a key path relative to the item) of the named joint,
+  /// loop joint, constraint, driver or force.
+  InputError item_error(const std::string& item, const std::string& field, const std::string& found,
+                        const std::string& expected) const;
 };
 
 /// Loads, composes (includes, --set overrides) and checks a case file. Throws
@@ -94,5 +106,12 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
 
 /// Converts a kernel ModelError into an InputError pointing into the case.
 InputError to_input_error(const CaseDefinition& definition, const ModelError& error);
+
+/// Converts a domain ParameterError (kernel/parameter_error.hpp) raised while building
+/// the part of the case at `base_path` ("forces[3]", "" for the root) into an InputError
+/// at the case key of its field: `base_path.<key>`, where key is
+/// key_of_field[field] when listed and the field's own name otherwise.
+InputError to_input_error(const CaseDefinition& definition, const std::string& base_path, const ParameterError& error,
+                          const std::map<std::string, std::string>& key_of_field = {});
 
 }  // namespace heavesim

@@ -111,10 +111,6 @@ void read_bodies(const NodeReader& section, CaseDefinition& definition) {
     const Matrix3 inertia = read_inertia(body["inertia"]);
     definition.bodies.push_back(BodyDefinition{name, Inertia(mass, com, inertia), std::nullopt});
     definition.body_paths[name] = body.path();
-    auto& fields = definition.body_field_locations[name];
-    fields["name"] = name_reader.location();
-    fields["mass"] = body["mass"].location();
-    fields["inertia"] = body["inertia"].location();
   }
 }
 
@@ -253,15 +249,6 @@ JointLimits read_limits(const NodeReader& reader, const JointType& type, const s
   return limits;
 }
 
-/// Where each present key of `item` sits in the file, for errors found later.
-std::map<std::string, SourceLocation> field_locations(const NodeReader& item,
-                                                      std::initializer_list<std::string> keys) {
-  std::map<std::string, SourceLocation> fields;
-  for (const std::string& key : keys)
-    if (item.has(key)) fields[key] = item[key].location();
-  return fields;
-}
-
 /// parent, child and the joint frame on each.
 template <class Definition>
 void read_joint_placement(const NodeReader& joint, Definition& def) {
@@ -293,8 +280,7 @@ void read_joints(const NodeReader& section, CaseDefinition& definition, std::set
     if (auto spring = joint.optional("spring")) def.spring = read_spring(*spring, type, type_name);
     if (auto limits = joint.optional("limits")) def.limits = read_limits(*limits, type, type_name);
     definition.initial_states[name] = read_initial_state(joint.optional("initial"), type);
-    definition.joint_paths[name] = joint.path();
-    definition.joint_field_locations[name] = field_locations(joint, {"name", "parent", "child", "spring", "limits"});
+    definition.item_paths[name] = joint.path();
     definition.joints.push_back(std::move(def));
   }
 }
@@ -308,9 +294,7 @@ void read_loop_joints(const NodeReader& section, CaseDefinition& definition, std
     def.name = read_unique_name(joint, names);
     read_joint_kind(joint, def);
     read_joint_placement(joint, def);
-    definition.constraint_paths[def.name] = joint.path();
-    definition.constraint_field_locations[def.name] =
-        field_locations(joint, {"name", "type", "parent", "child", "axis", "axes"});
+    definition.item_paths[def.name] = joint.path();
     definition.loop_joints.push_back(std::move(def));
   }
 }
@@ -339,9 +323,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       def.offset = item.number_or("offset", 0.0);
       definition.couplers.push_back(std::move(def));
     }
-    definition.constraint_paths[name] = item.path();
-    definition.constraint_field_locations[name] =
-        field_locations(item, {"name", "type", "body_a", "body_b", "distance", "joint_a", "joint_b", "ratio"});
+    definition.item_paths[name] = item.path();
   }
 }
 
@@ -375,9 +357,7 @@ void read_drivers(const NodeReader& section, CaseDefinition& definition, std::se
     auto function = std::make_shared<const TimeFunction>(def.name, position, velocity, acceleration,
                                                          expressions.parameters());
     def.motion = [function](double t) { return (*function)(t); };
-    definition.constraint_paths[def.name] = item.path();
-    definition.constraint_field_locations[def.name] =
-        field_locations(item, {"name", "joint", "coordinate", "position", "velocity", "acceleration"});
+    definition.item_paths[def.name] = item.path();
     definition.drivers.push_back(std::move(def));
   }
 }
@@ -460,8 +440,7 @@ void read_forces(const NodeReader& section, CaseDefinition& definition, std::set
     }
     if (auto point = item.optional(def.type == ForceDefinition::Type::spring_damper ? "point_a" : "point"))
       def.point_a = point->vector3();
-    definition.force_paths[def.name] = item.path();
-    definition.force_field_locations[def.name] = field_locations(item, {"name", "type", "body_a", "body_b", "body"});
+    definition.item_paths[def.name] = item.path();
     definition.forces.push_back(std::move(def));
   }
 }
@@ -555,6 +534,17 @@ void read_output(const std::optional<NodeReader>& reader, CaseDefinition& defini
   }
 }
 
+/// Every key's position by key path, in the reader's spelling (a.b, a[2].c).
+void record_sources(const CaseNode& node, const std::string& path, std::map<std::string, SourceLocation>& sources) {
+  if (!path.empty()) sources[path] = node.location;
+  if (node.is_map())
+    for (const CaseNode::Entry& entry : node.entries)
+      record_sources(entry.value, path.empty() ? entry.key : path + "." + entry.key, sources);
+  else if (node.is_sequence())
+    for (std::size_t i = 0; i < node.items.size(); ++i)
+      record_sources(node.items[i], path + "[" + std::to_string(i) + "]", sources);
+}
+
 void read_parameters(const std::optional<NodeReader>& reader, ExpressionContext& expressions) {
   if (!reader) return;
   if (!reader->node().is_map()) reader->fail("a map of name: value");
@@ -579,6 +569,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   CaseDefinition definition;
   definition.source_path = path;
   definition.resolved_yaml = to_yaml_text(tree);
+  record_sources(tree, "", definition.sources);
   ExpressionContext expressions;
   const NodeReader root(tree, "", expressions);
   root.expect_map({"name", "description", "parameters", "environment", "waves", "bodies", "joints", "loop_joints",
@@ -610,24 +601,43 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   return definition;
 }
 
-InputError to_input_error(const CaseDefinition& definition, const ModelError& error) {
-  const ModelError::ItemKind kind = error.kind();
-  const auto& paths = kind == ModelError::ItemKind::body    ? definition.body_paths
-                      : kind == ModelError::ItemKind::joint ? definition.joint_paths
-                                                            : definition.constraint_paths;
-  const auto& locations = kind == ModelError::ItemKind::body    ? definition.body_field_locations
-                          : kind == ModelError::ItemKind::joint ? definition.joint_field_locations
-                                                                : definition.constraint_field_locations;
-  SourceLocation location{definition.source_path, 0, 0};
-  std::string key_path;
-  if (auto it = paths.find(error.item()); it != paths.end()) key_path = it->second + "." + error.field();
-  if (auto it = locations.find(error.item()); it != locations.end()) {
-    if (auto field = it->second.find(error.field()); field != it->second.end())
-      location = field->second;
-    else if (auto name = it->second.find("name"); name != it->second.end())
-      location = name->second;
+SourceLocation CaseDefinition::location_of(const std::string& key_path) const {
+  std::string path = key_path;
+  if (auto it = sources.find(path); it != sources.end()) return it->second;
+  while (true) {
+    const std::size_t cut = path.find_last_of(".[");
+    if (cut == std::string::npos || cut == 0) break;
+    path.resize(cut);
+    if (auto name = sources.find(path + ".name"); name != sources.end()) return name->second;
+    if (auto it = sources.find(path); it != sources.end()) return it->second;
   }
-  return InputError(location, key_path, error.found(), error.expected());
+  return SourceLocation{source_path, 0, 0};
+}
+
+InputError CaseDefinition::error_at(const std::string& key_path, const std::string& found,
+                                    const std::string& expected) const {
+  return InputError(location_of(key_path), key_path, found, expected);
+}
+
+InputError CaseDefinition::item_error(const std::string& item, const std::string& field, const std::string& found,
+                                      const std::string& expected) const {
+  return error_at(item_paths.at(item) + "." + field, found, expected);
+}
+
+InputError to_input_error(const CaseDefinition& definition, const ModelError& error) {
+  const auto& paths =
+      error.kind() == ModelError::ItemKind::body ? definition.body_paths : definition.item_paths;
+  const auto it = paths.find(error.item());
+  if (it == paths.end())
+    return InputError(SourceLocation{definition.source_path, 0, 0}, "", error.found(), error.expected());
+  return definition.error_at(it->second + "." + error.field(), error.found(), error.expected());
+}
+
+InputError to_input_error(const CaseDefinition& definition, const std::string& base_path, const ParameterError& error,
+                          const std::map<std::string, std::string>& key_of_field) {
+  const auto renamed = key_of_field.find(error.field());
+  const std::string& key = renamed != key_of_field.end() ? renamed->second : error.field();
+  return definition.error_at(base_path.empty() ? key : base_path + "." + key, error.found(), error.expected());
 }
 
 }  // namespace heavesim

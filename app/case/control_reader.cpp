@@ -141,11 +141,8 @@ void read_force_actuator(const NodeReader& reader, ForceActuatorParameters& a) {
   reader.expect_map({"type", "time_constant", "max_force", "max_rate"});
   a.time_constant = non_negative_or(reader, "time_constant", a.time_constant);
   a.max_force = positive_or(reader, "max_force", a.max_force);
-  if (auto rate = reader.optional("max_rate")) {
-    a.max_rate = rate->positive_number();
-    if (a.time_constant == 0.0)
-      rate->fail("a rate limit with time_constant = 0", "time_constant > 0 (the rate limit acts on the lag)");
-  }
+  // A rate limit needs the lag: ActiveCompensator's rule, checked when the scene builds it.
+  if (auto rate = reader.optional("max_rate")) a.max_rate = rate->positive_number();
 }
 
 void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& def) {
@@ -259,10 +256,8 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
             "one of them: with an MRU the controlled position is the MRU heave at the stroke base plus the stroke");
     }
   }
-  if (p.acceleration_feedforward != 0.0 && !p.mru)
-    controller["acceleration_feedforward"].fail(
-        "acceleration feed-forward without an MRU",
-        "measurement.mru (the true acceleration is not known before the dynamics are solved; the MRU's is)");
+  // Acceleration feed-forward needs the MRU: ActiveCompensator's rule, checked when the
+  // scene builds it.
 }
 
 }  // namespace
@@ -281,16 +276,7 @@ void read_compensator(const NodeReader& item, const std::string& type, const std
     read_pneumatic(item, def);
   else
     read_active(item, def);
-  definition.force_paths[name] = item.path();
-  auto& fields = definition.force_field_locations[name];
-  fields["name"] = item["name"].location();
-  fields["stroke"] = item["stroke"].location();
-  for (const char* key : {"joint", "base", "moving"})
-    if (item["stroke"].has(key)) fields[std::string("stroke.") + key] = item["stroke"][key].location();
-  for (const char* key : {"gas_pressure", "end_stops", "controller", "measurement"})
-    if (item.has(key)) fields[key] = item[key].location();
-  if (item.has("measurement") && item["measurement"].has("controlled_point"))
-    fields["measurement.controlled_point"] = item["measurement"]["controlled_point"].location();
+  definition.item_paths[name] = item.path();
   definition.compensators.push_back(std::move(def));
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "hydro/elements/body_motion.hpp"
+#include "hydro/elements/element_factories.hpp"
 #include "hydro/excitation/semisubmersible_heave.hpp"
 #include "hydro/waves/ramp.hpp"
 #include "hydro/waves/wave_train.hpp"
@@ -59,16 +60,8 @@ struct HydroForceDefinition {
   /// run given the CG (MSS semisub.hst); its gravitational part is taken out because the
   /// kernel applies the weight at the centre of mass itself (docs/physics/hydrodynamics.md §7).
   bool hst_includes_gravity = false;
-  // radiation
-  int state_space_order = 12;     // states per realised mode pair
-  /// The memory as a direct convolution of the sampled K(t) (RadiationConvolution; for
-  /// fixed-step explicit runs whose step divides kernel_step) instead of the state space.
-  bool convolution = false;
-  double kernel_duration = 60.0;  // s, length of the retardation kernel K(t)
-  double kernel_step = 0.05;      // s, its sample step
-  /// WAMIT modes (0-based) whose memory is realised: pairs (i, j) with both in the set.
-  /// All six by default; a body held to fewer degrees of freedom needs only those.
-  std::array<bool, 6> modes = {true, true, true, true, true, true};
+  /// radiation: state space or convolution, kernel sampling, modes (hydro's own settings)
+  hydro::RadiationMemorySettings memory;
   // linear_damping: B [N s/m ...]; mooring, hydrostatics given as `stiffness`: K [N/m ...];
   // added_mass: A [kg, kg m^2] about the reference point; WAMIT order, world axes
   hydro::Matrix6 matrix = hydro::Matrix6::Zero();

@@ -1,12 +1,13 @@
 #include "app/case/hydro_reader.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "io/bem/bem_file.hpp"
-#include "hydro/radiation/state_space.hpp"
 
 namespace heavesim {
 namespace {
@@ -102,17 +103,14 @@ void read_waves(const NodeReader& reader, CaseDefinition& definition) {
     if (auto gamma = reader.optional("gamma")) {
       if (waves.type != WaveDefinition::Type::jonswap)
         gamma->fail("'gamma' on a Pierson-Moskowitz sea", "no 'gamma' (type: jonswap has a peak enhancement)");
-      waves.peak_enhancement = gamma->number();
-      if (!(waves.peak_enhancement >= 1.0 && waves.peak_enhancement <= 10.0))
-        gamma->fail(fmt::format("{:g}", waves.peak_enhancement), "a peak enhancement 1 <= gamma <= 10");
+      waves.peak_enhancement = gamma->number();  // its range is hydro::Jonswap's rule
     }
     hydro::IrregularSeaSettings& sea = waves.irregular;
     sea.num_components = 200;
-    if (auto components = reader.optional("components")) {
-      const long n = components->integer();
-      if (n < 1 || n > 100000) components->fail(fmt::format("{}", n), "a number of components in 1 .. 100000");
-      sea.num_components = static_cast<int>(n);
-    }
+    // The number of components and the band are hydro::irregular_sea's rules, checked
+    // when the scene builds the sea.
+    if (auto components = reader.optional("components"))
+      sea.num_components = static_cast<int>(std::clamp<long>(components->integer(), INT_MIN, INT_MAX));
     if (auto seed = reader.optional("seed")) {
       const long s = seed->integer();
       if (s < 0) seed->fail(fmt::format("{}", s), "a seed >= 0");
@@ -124,10 +122,6 @@ void read_waves(const NodeReader& reader, CaseDefinition& definition) {
                                : hydro::FrequencyDiscretization::equal_spacing;
     sea.min_frequency = reader.optional("min_frequency") ? reader["min_frequency"].positive_number() : 0.1;
     sea.max_frequency = reader.optional("max_frequency") ? reader["max_frequency"].positive_number() : 3.0;
-    if (!(sea.max_frequency > sea.min_frequency))
-      reader["max_frequency"].fail(fmt::format("{:g} rad/s, not above min_frequency = {:g} rad/s", sea.max_frequency,
-                                               sea.min_frequency),
-                                   "max_frequency > min_frequency");
   }
   waves.heading = reader.number_or("heading", 0.0);
   if (auto ramp = reader.optional("ramp")) waves.ramp = read_ramp(*ramp);
@@ -137,7 +131,6 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
                       CaseDefinition& definition) {
   HydroForceDefinition def;
   def.name = name;
-  std::map<std::string, SourceLocation> fields{{"name", item["name"].location()}};
   if (type == "hydrostatics") {
     item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "hst_includes_gravity",
                      "length_scale",
@@ -170,26 +163,19 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
                      "modes", "length_scale", "description"});
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
-    if (auto memory = item.optional("memory")) def.convolution = memory->choice({"state_space", "convolution"}) == "convolution";
-    if (auto order = item.optional("state_space_order")) {
-      const long n = order->integer();
-      if (n < 2 || n > hydro::max_state_space_order)
-        order->fail(fmt::format("{}", n), fmt::format("a state-space order in 2 .. {}", hydro::max_state_space_order));
-      def.state_space_order = static_cast<int>(n);
-    }
-    if (auto duration = item.optional("kernel_duration")) def.kernel_duration = duration->positive_number();
-    if (auto step = item.optional("kernel_step")) {
-      def.kernel_step = step->positive_number();
-      if (def.kernel_step * 10 > def.kernel_duration)
-        step->fail(fmt::format("a step of {:g} s for a kernel of {:g} s", def.kernel_step, def.kernel_duration),
-                   "kernel_step <= kernel_duration / 10");
-    }
+    hydro::RadiationMemorySettings& memory = def.memory;
+    if (auto kind = item.optional("memory")) memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
+    // The order's range and the kernel's sampling are hydro's rules (state_space.hpp,
+    // retardation_kernel.hpp), checked when the scene builds the element.
+    if (auto order = item.optional("state_space_order")) memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
+    if (auto duration = item.optional("kernel_duration")) memory.kernel_duration = duration->positive_number();
+    if (auto step = item.optional("kernel_step")) memory.kernel_step = step->positive_number();
     if (auto modes = item.optional("modes")) {
-      def.modes.fill(false);
+      memory.modes.fill(false);
       for (const NodeReader& mode : modes->items()) {
         const long m = mode.integer();
         if (m < 1 || m > 6) mode.fail(fmt::format("{}", m), "a WAMIT mode 1..6 (surge, sway, heave, roll, pitch, yaw)");
-        def.modes[m - 1] = true;
+        memory.modes[m - 1] = true;
       }
     }
   } else if (type == "wave_excitation") {
@@ -246,10 +232,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (auto pretension = item.optional("pretension")) def.vector = read_vector6(*pretension);
   }
   def.body = item["body"].text();
-  fields["body"] = item["body"].location();
   if (!def.file_key.empty()) {
     def.file = read_data_file(item[def.file_key]);
-    fields[def.file_key] = item[def.file_key].location();
   }
   if (auto scale = item.optional("length_scale")) {
     // ULEN nondimensionalises WAMIT's files only; BEMIO and Capytaine store SI values.
@@ -258,10 +242,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
                   "no 'length_scale' (only WAMIT files are nondimensional in ULEN)");
     def.length_scale = scale->positive_number();
   }
-  for (const char* key : {"state_space_order", "modes"})
-    if (item.has(key)) fields[key] = item[key].location();
-  definition.force_paths[name] = item.path();
-  definition.force_field_locations[name] = fields;
+  definition.item_paths[name] = item.path();
   definition.hydro_forces.push_back(std::move(def));
 }
 

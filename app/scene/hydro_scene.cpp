@@ -8,15 +8,11 @@
 
 #include "io/bem/bem_file.hpp"
 #include "app/scene/recorded_load.hpp"
-#include "hydro/elements/linear_body_loads.hpp"
+#include "hydro/elements/element_factories.hpp"
 #include "hydro/elements/nonlinear_hydrostatics.hpp"
-#include "hydro/elements/radiation_convolution.hpp"
-#include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
 #include "hydro/excitation/semisubmersible_heave.hpp"
 #include "hydro/radiation/added_mass.hpp"
-#include "hydro/radiation/retardation_kernel.hpp"
-#include "hydro/radiation/state_space.hpp"
 #include "hydro/waves/wave_spectrum.hpp"
 
 namespace heavesim {
@@ -24,10 +20,19 @@ namespace {
 
 InputError hydro_error(const CaseDefinition& definition, const std::string& name, const std::string& field,
                        const std::string& found, const std::string& expected) {
-  const auto& fields = definition.force_field_locations.at(name);
-  auto it = fields.find(field);
-  const SourceLocation location = it != fields.end() ? it->second : fields.at("name");
-  return InputError(location, definition.force_paths.at(name) + "." + field, found, expected);
+  return definition.item_error(name, field, found, expected);
+}
+
+/// The case key of each parameter of hydro's sea (WaveTrain, spectra, dispersion).
+const std::map<std::string, std::string>& sea_keys() {
+  static const std::map<std::string, std::string> keys{
+      {"significant_height", "waves.hs"},  {"peak_period", "waves.tp"},
+      {"peak_enhancement", "waves.gamma"}, {"num_components", "waves.components"},
+      {"min_frequency", "waves.min_frequency"}, {"max_frequency", "waves.max_frequency"},
+      {"height", "waves.amplitude"},       {"period", "waves.period"},
+      {"angular_frequency", "waves.period"}, {"gravity", "environment.gravity"},
+      {"depth", "environment.water_depth"}};
+  return keys;
 }
 
 /// Reads one data file; a DataError points at the case key and names the data file's line
@@ -53,15 +58,11 @@ const BodyDefinition* find_body(const CaseDefinition& definition, const std::str
   return nullptr;
 }
 
-double body_mass(const CaseDefinition& definition, const std::string& body) {
-  const BodyDefinition* b = find_body(definition, body);
-  return b ? b->inertia.mass() : 0.0;
-}
-
 }  // namespace
 
 HydroData read_hydro_data(const CaseDefinition& definition) {
   HydroData data;
+  data.waves = std::make_shared<const hydro::WaveTrain>(wave_train(definition));
   std::set<std::string> radiating_bodies;
   auto add_inertia = [&](const std::string& body, const Matrix6& added) {
     data.added_inertia.try_emplace(body, Matrix6::Zero()).first->second += added;  // several elements add up
@@ -81,8 +82,7 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
     } else if (force.type == Type::wave_excitation && force.heave_estimate) {
       // Evaluated at the sea's own component frequencies: exact, no interpolation.
       std::vector<double> frequencies;
-      const hydro::WaveTrain waves = wave_train(definition);
-      for (const hydro::WaveComponent& c : waves.components()) frequencies.push_back(c.angular_frequency);
+      for (const hydro::WaveComponent& c : data.waves->components()) frequencies.push_back(c.angular_frequency);
       data.excitation[force.name] = hydro::semisubmersible_heave_excitation_table(
           *force.heave_estimate, frequencies, definition.water.density, definition.gravity.norm());
     } else if (force.type == Type::wave_excitation) {
@@ -101,7 +101,9 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
   return data;
 }
 
-hydro::WaveTrain wave_train(const CaseDefinition& definition) {
+namespace {
+
+hydro::WaveTrain unchecked_wave_train(const CaseDefinition& definition) {
   const WaveDefinition& waves = definition.waves;
   const double g = definition.gravity.norm();
   if (waves.type == WaveDefinition::Type::regular)
@@ -119,11 +121,20 @@ hydro::WaveTrain wave_train(const CaseDefinition& definition) {
   return hydro::irregular_sea(hydro::PiersonMoskowitz{waves.significant_height, waves.peak_period}, settings);
 }
 
+}  // namespace
+
+hydro::WaveTrain wave_train(const CaseDefinition& definition) {
+  try {
+    return unchecked_wave_train(definition);
+  } catch (const ParameterError& error) {
+    throw to_input_error(definition, "", error, sea_keys());
+  }
+}
+
 void add_hydro_elements(const CaseDefinition& definition, const HydroData& data, const Model& model,
                         MultibodySystem& system) {
   if (definition.hydro_forces.empty()) return;
-  // One sea per scene, shared by the elements that record it.
-  auto waves = std::make_shared<const hydro::WaveTrain>(wave_train(definition));
+  const std::shared_ptr<const hydro::WaveTrain>& waves = data.waves;
   const double g = definition.gravity.norm(), rho = definition.water.density;
   using Type = HydroForceDefinition::Type;
   for (const HydroForceDefinition& force : definition.hydro_forces) {
@@ -133,72 +144,46 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
                         "the name of a floating body");
     std::unique_ptr<ForceElement> element;
     std::shared_ptr<const hydro::WaveTrain> recorded_waves;
-    switch (force.type) {
-      case Type::hydrostatics:
-        if (force.nonlinear) {
-          element = std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
-        } else {
-          // F = f0 - C xi about the body frame origin; f0 = rho g V e_z, by default the
-          // body's weight so that the reference pose (the world frame) is the equilibrium.
-          hydro::Vector6 buoyancy = hydro::Vector6::Zero();
-          buoyancy[2] = force.displaced_volume ? rho * g * *force.displaced_volume : body_mass(definition, force.body) * g;
-          hydro::Matrix6 stiffness = data.stiffness.at(force.name);
-          if (force.hst_includes_gravity)  // the kernel's weight at the CoM provides this part
-            if (const BodyDefinition* body = find_body(definition, force.body))
-              stiffness -= hydro::wamit_gravitational_stiffness(body->inertia.mass(), body->inertia.com(), g);
-          element = std::make_unique<hydro::LinearRestoring>(force.name, link, stiffness, buoyancy, Transform::Identity());
-        }
-        break;
-      case Type::radiation: {
-        const hydro::RadiationData& radiation = data.radiation.at(force.name);
-        hydro::RetardationKernel kernel =
-            hydro::retardation_kernel(radiation, force.kernel_duration, force.kernel_step);
-        if (force.convolution) {
-          // Only the pairs of the modes asked for (a body held to fewer degrees of freedom).
-          for (hydro::Matrix6& K : kernel.values)
-            for (int i = 0; i < 6; ++i)
-              for (int j = 0; j < 6; ++j)
-                if (!force.modes[i] || !force.modes[j]) K(i, j) = 0.0;
-          element = std::make_unique<hydro::RadiationConvolution>(force.name, link, std::move(kernel));
+    try {
+      switch (force.type) {
+        case Type::hydrostatics:
+          if (force.nonlinear) {
+            element = std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
+          } else {
+            const BodyDefinition& body = *find_body(definition, force.body);  // the model has it
+            hydro::LinearHydrostaticsSettings settings;
+            settings.stiffness = data.stiffness.at(force.name);
+            settings.stiffness_includes_gravity = force.hst_includes_gravity;
+            settings.displaced_volume = force.displaced_volume;
+            settings.body_mass = body.inertia.mass();
+            settings.center_of_mass = body.inertia.com();
+            settings.water_density = rho;
+            settings.gravity = g;
+            element = hydro::linear_hydrostatics(force.name, link, settings);
+          }
           break;
-        }
-        // Pair (i, j) is realised when both modes are asked for and its kernel is not
-        // negligible against its own diagonal: max|K_ij| > 1e-3 sqrt(max|K_ii| max|K_jj|)
-        // (dimensionally consistent, unlike a comparison across translation and rotation).
-        hydro::Matrix6 largest = hydro::Matrix6::Zero();
-        for (const hydro::Matrix6& K : kernel.values) largest = largest.cwiseMax(K.cwiseAbs());
-        std::vector<hydro::ModePairStateSpace> systems;
-        for (int i = 0; i < 6; ++i)
-          for (int j = 0; j < 6; ++j)
-            if (force.modes[i] && force.modes[j] && largest(i, j) > 0.0 &&
-                largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
-              systems.push_back(hydro::realize_kernel_entry(kernel, i, j, force.state_space_order));
-        for (const hydro::ModePairStateSpace& realised : systems)
-          if (!realised.stable)  // an unstable memory would grow without bound in the run
-            throw hydro_error(definition, force.name, "state_space_order",
-                              fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
-                                          realised.force_mode + 1, realised.velocity_mode + 1,
-                                          force.state_space_order, realised.r_squared),
-                              "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
-        element = std::make_unique<hydro::RadiationMemory>(force.name, link, std::move(systems));
-        break;
+        case Type::radiation:
+          element = hydro::radiation_memory(force.name, link, data.radiation.at(force.name), force.memory);
+          break;
+        case Type::wave_excitation:
+          element = std::make_unique<hydro::WaveExcitation>(force.name, link, data.excitation.at(force.name), *waves);
+          recorded_waves = waves;
+          break;
+        case Type::linear_damping:
+          element = std::make_unique<hydro::BodyDamping>(force.name, link, force.matrix);
+          break;
+        case Type::quadratic_damping:
+          element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.vector);
+          break;
+        case Type::added_mass:
+          continue;  // in the body's inertia (read_hydro_data)
+        case Type::mooring:
+          element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.matrix, force.vector,
+                                                             Transform::Identity());
+          break;
       }
-      case Type::wave_excitation:
-        element = std::make_unique<hydro::WaveExcitation>(force.name, link, data.excitation.at(force.name), *waves);
-        recorded_waves = waves;
-        break;
-      case Type::linear_damping:
-        element = std::make_unique<hydro::BodyDamping>(force.name, link, force.matrix);
-        break;
-      case Type::quadratic_damping:
-        element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.vector);
-        break;
-      case Type::added_mass:
-        continue;  // in the body's inertia (read_hydro_data)
-      case Type::mooring:
-        element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.matrix, force.vector,
-                                                           Transform::Identity());
-        break;
+    } catch (const ParameterError& error) {
+      throw to_input_error(definition, definition.item_paths.at(force.name), error);
     }
     system.add_force_element(std::make_unique<RecordedLoad>(std::move(element), model, link, recorded_waves));
   }

@@ -2,6 +2,7 @@
 // Builds the case's hydrodynamic force elements (hydro/) on the model. Only what the
 // case declares is read and built.
 #include <map>
+#include <memory>
 
 #include "app/case/case_definition.hpp"
 #include "hydro/bem/bem_data.hpp"
@@ -21,10 +22,16 @@ struct HydroData {
   /// A(inf) of every body with a radiation element, as added inertia about the body
   /// frame origin, body axes, [angular; linear] (added_mass.hpp), by body name.
   std::map<std::string, Matrix6> added_inertia;
+  /// The incident sea (no components when none is declared), one per scene, shared by
+  /// the elements that record it.
+  std::shared_ptr<const hydro::WaveTrain> waves;
 };
+/// Also builds the sea, so that hydro's rules on it (wave_spectrum.hpp, wave_train.hpp,
+/// dispersion.hpp) are checked for every case that declares one.
 HydroData read_hydro_data(const CaseDefinition& definition);
 
-/// The incident sea of the case (empty when none is declared).
+/// The incident sea of the case (empty when none is declared). A hydro ParameterError
+/// becomes an InputError at its `waves:` or `environment:` key.
 hydro::WaveTrain wave_train(const CaseDefinition& definition);
 
 /// Adds every hydro element of the case to `system`. Each one records its load on the

@@ -15,10 +15,7 @@ namespace {
 
 InputError force_error(const CaseDefinition& definition, const std::string& force, const std::string& field,
                        const std::string& found, const std::string& expected) {
-  SourceLocation location{definition.source_path, 0, 0};
-  const auto& fields = definition.force_field_locations.at(force);
-  if (auto it = fields.find(field); it != fields.end()) location = it->second;
-  return InputError(location, definition.force_paths.at(force) + "." + field, found, expected);
+  return definition.item_error(force, field, found, expected);
 }
 
 BodyPoint body_point(const CaseDefinition& definition, const Model& model, const ForceDefinition& force,
@@ -80,8 +77,8 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
     data.constraint_residual.cwiseAbs().maxCoeff(&worst);
     const std::string row = describe_constraint_row(model, worst);
     const std::string& name = constraint_of_row(model, worst)->name;  // every constraint comes from the case
-    const SourceLocation location = definition.constraint_field_locations.at(name).at("name");
-    const std::string& key_path = definition.constraint_paths.at(name);
+    const std::string& key_path = definition.item_paths.at(name);
+    const SourceLocation location = definition.location_of(key_path + ".name");
     throw InputError(location, key_path,
                      fmt::format("an initial state where {} cannot close: |Phi| = {:.3g} after {} Newton iterations",
                                  row, result.position_residual, result.iterations),

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
+
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim {
 
@@ -15,10 +16,15 @@ ActiveCompensator::ActiveCompensator(std::string name, StrokeAxis axis, ActiveCo
                             std::sqrt(0.5 * (p.hydraulic.supply.supply_pressure - p.hydraulic.supply.tank_pressure)) /
                             p.hydraulic.cylinder.area_a;
   p.gains.output_limit = hydraulic ? p.hydraulic.max_speed : p.force_actuator.max_force;
+  // The true acceleration is not known before the dynamics are solved; the MRU's is.
   if (p.acceleration_feedforward != 0.0 && !p.mru)
-    throw std::invalid_argument("acceleration feed-forward needs the MRU's acceleration output");
+    throw ParameterError(
+        "acceleration_feedforward", "acceleration feed-forward without an MRU",
+        "measurement.mru (the true acceleration is not known before the dynamics are solved; the MRU's is)");
+  // The rate limit bounds dF/dt of the first-order lag, which a lag of 0 does not have.
   if (!hydraulic && p.force_actuator.time_constant == 0.0 && std::isfinite(p.force_actuator.max_rate))
-    throw std::invalid_argument("a force rate limit needs an actuator lag (time_constant > 0)");
+    throw ParameterError("max_rate", "a rate limit with time_constant = 0",
+                         "time_constant > 0 (the rate limit acts on the lag)");
   if (hydraulic && std::isnan(p.hydraulic.initial_pressure_a)) {
     // Zero force: p_A A_A - p_B A_B = p_atm (A_A - A_B) with p_A + p_B = p_S.
     const HydraulicCylinderParameters& c = p.hydraulic.cylinder;

@@ -92,7 +92,7 @@ struct ActiveState {
 
 class ActiveCompensator : public StrokeElement<ActiveState, ActiveCompensatorParameters> {
  public:
-  /// Throws std::invalid_argument for a configuration it cannot run (acceleration
+  /// Throws ParameterError for a configuration it cannot run (acceleration
   /// feed-forward without an MRU, a rate limit without a lag).
   ActiveCompensator(std::string name, StrokeAxis axis, ActiveCompensatorParameters parameters);
 

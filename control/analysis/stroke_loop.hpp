@@ -12,6 +12,9 @@
 #include <memory>
 #include <vector>
 
+#include <string>
+
+#include "control/active/active_compensator.hpp"
 #include "control/stroke/stroke_axis.hpp"
 
 namespace heavesim {
@@ -27,5 +30,17 @@ struct StrokeLoopPoles {
 
 /// The poles for a moving mass [kg] and the elements that act on the stroke.
 StrokeLoopPoles stroke_loop_poles(double mass, const std::vector<StrokeElementFactory>& elements);
+
+/// Throws ParameterError("controller") when a pole of the active compensator's stroke
+/// loop (carried mass `apparent_mass` [kg]) has a real part above max(1e-6 |largest
+/// pole|, 2e-3 1/s), naming the pole and how to choose stable gains.
+void check_stroke_loop_stable(const StrokeLoopPoles& poles, const ActiveCompensatorParameters& active,
+                              double apparent_mass);
+
+/// How to choose stable gains for the compensator's actuator: pole placement on the
+/// carried mass for a force actuator; for a valve-driven cylinder a position-loop gain
+/// well below 2 zeta_h omega_h, omega_h = sqrt(beta (A_A^2 / V_A + A_B^2 / V_B) / m)
+/// (Merritt, Hydraulic Control Systems, 1967) with the carried mass m = `apparent_mass` [kg].
+std::string stable_gain_advice(const ActiveCompensatorParameters& active, double apparent_mass);
 
 }  // namespace heavesim

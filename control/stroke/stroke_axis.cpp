@@ -1,13 +1,19 @@
 #include "control/stroke/stroke_axis.hpp"
 
-#include <stdexcept>
+#include "kernel/joints/joint.hpp"
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim {
 
 StrokeAxis StrokeAxis::on_joint(const Model& model, int joint_index, double mid_stroke) {
-  if (joint_index < 1 || joint_index >= model.num_links() ||
-      !std::holds_alternative<PrismaticJoint>(model.joints[joint_index].type))
-    throw std::invalid_argument("a stroke axis in joint form needs a prismatic joint");
+  // The stroke is the joint's one coordinate, along its axis.
+  if (joint_index < 1 || joint_index >= model.num_links())
+    throw ParameterError("joint", "joint index " + std::to_string(joint_index) + ", which is not a joint",
+                         "the name of a prismatic joint (the stroke is its coordinate)");
+  const Joint& joint = model.joints[joint_index];
+  if (!std::holds_alternative<PrismaticJoint>(joint.type))
+    throw ParameterError("joint", "'" + joint.name + "', a " + joint_type_name(joint.type) + " joint",
+                         "the name of a prismatic joint (the stroke is its coordinate)");
   StrokeAxis axis;
   axis.joint = joint_index;
   axis.mid_stroke = mid_stroke;

@@ -1,7 +1,10 @@
 #include "hydro/radiation/retardation_kernel.hpp"
 
 #include <cmath>
-#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
 
@@ -17,7 +20,10 @@ Matrix6 interpolated_damping(const RadiationData& r, double w, double taper) {
 }
 
 RetardationKernel retardation_kernel(const RadiationData& r, double duration, double dt, double taper) {
-  if (!(dt > 0.0) || !(duration > dt)) throw std::invalid_argument("retardation_kernel: need 0 < dt < duration");
+  // Ten samples at least: a coarser kernel resolves neither its decay nor its oscillation.
+  if (!(dt > 0.0) || !(duration > 0.0) || dt * 10 > duration)
+    throw ParameterError("kernel_step", fmt::format("a step of {:g} s for a kernel of {:g} s", dt, duration),
+                         "kernel_step <= kernel_duration / 10");
   // Knots of the piecewise-linear B: (0, 0) then the BEM points.
   std::vector<double> w{0.0};
   std::vector<Matrix6> b{Matrix6::Zero()};

@@ -21,6 +21,7 @@ struct RetardationKernel {
 };
 
 /// K(t) on [0, duration] [s] with step dt [s] from B(w) of `radiation`.
+/// Throws ParameterError("kernel_step") unless 0 < time_step <= duration / 10.
 RetardationKernel retardation_kernel(const RadiationData& radiation, double duration, double time_step,
                                      double taper = 0.5);
 

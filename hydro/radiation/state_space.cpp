@@ -2,25 +2,41 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 #include <unsupported/Eigen/MatrixFunctions>
+
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
 
+void check_state_space_order(int order) {
+  // One state cannot hold the oscillation of a radiation kernel; more than the fixed
+  // maximum would not fit the element's pre-sized state matrices.
+  if (order < 2 || order > max_state_space_order)
+    throw ParameterError("state_space_order", fmt::format("{}", order),
+                         fmt::format("a state-space order in 2 .. {}", max_state_space_order));
+}
+
 ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, int j, int order, int max_hankel_size) {
-  if (order < 1 || order > max_state_space_order)
-    throw std::invalid_argument("state-space order must be 1.." + std::to_string(max_state_space_order) + "; found " +
-                                std::to_string(order));
+  check_state_space_order(order);
   const int samples = static_cast<int>(kernel.values.size());
   const int stride = std::max(1, (samples - 1) / (2 * max_hankel_size - 1) + ((samples - 1) % (2 * max_hankel_size - 1) != 0));
   const double h = stride * kernel.time_step;
   std::vector<double> y;
   for (int k = 0; k < samples; k += stride) y.push_back(kernel.values[k](i, j));
   const int size = std::min<int>(max_hankel_size, (static_cast<int>(y.size()) - 1) / 2);
-  if (size < order) throw std::invalid_argument("kernel too short for a state space of order " + std::to_string(order));
+  // The Hankel matrix of 2 size + 1 samples has rank <= size: at least `order` rows.
+  if (size < order)
+    throw ParameterError("kernel_step",
+                         fmt::format("a kernel of {} samples ({:g} s every {:g} s), which holds a Hankel matrix of "
+                                     "size {} only",
+                                     samples, kernel.duration(), kernel.time_step, size),
+                         fmt::format("at least 2 x {} + 1 = {} samples for a state space of order {}: a shorter "
+                                     "kernel_step, a longer kernel_duration or a lower state_space_order",
+                                     order, 2 * order + 1, order));
   Eigen::MatrixXd H0(size, size), H1(size, size);
   for (int r = 0; r < size; ++r)
     for (int c = 0; c < size; ++c) {

@@ -28,9 +28,15 @@ struct ModePairStateSpace {
   bool reflected_poles = false;  // unstable poles of the raw realisation were mirrored
 };
 
+/// The orders a realisation can have: 2 .. max_state_space_order. Throws
+/// ParameterError("state_space_order") otherwise.
+void check_state_space_order(int order);
+
 /// Realises one kernel entry K_ij (samples every `time_step` [s]) with `order` states,
 /// using at most `max_hankel_size` rows and columns (the samples are decimated so the
 /// Hankel matrix spans the whole kernel).
+/// Throws ParameterError: "state_space_order" out of range, "kernel_step" when the kernel
+/// has fewer than 2 order + 1 samples.
 ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, int j, int order,
                                         int max_hankel_size = 150);
 

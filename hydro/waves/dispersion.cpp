@@ -1,15 +1,21 @@
 #include "hydro/waves/dispersion.hpp"
 
 #include <cmath>
-#include <stdexcept>
 #include <string>
+
+#include <fmt/format.h>
+
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
 
 double wave_number(double w, double h, double g) {
-  if (!(w >= 0.0) || !(h > 0.0) || !(g > 0.0))
-    throw std::invalid_argument("wave_number: expected w >= 0, depth > 0, g > 0; found w = " + std::to_string(w) +
-                                ", depth = " + std::to_string(h) + ", g = " + std::to_string(g));
+  if (!(g > 0.0))
+    throw ParameterError("gravity", fmt::format("g = {:g} m/s^2", g),
+                         "g > 0 (waves need gravity: w^2 = g k tanh(k h))");
+  if (!(h > 0.0)) throw ParameterError("depth", fmt::format("a depth of {:g} m", h), "a water depth > 0 m");
+  if (!(w >= 0.0))
+    throw ParameterError("angular_frequency", fmt::format("w = {:g} rad/s", w), "an angular frequency >= 0 rad/s");
   const double k_deep = w * w / g;
   if (w == 0.0) return 0.0;
   // Beyond k h = 20, tanh(k h) = 1 to machine precision: the deep-water root.

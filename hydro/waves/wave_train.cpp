@@ -2,8 +2,11 @@
 
 #include <cmath>
 #include <random>
-#include <stdexcept>
 #include <string>
+
+#include <fmt/format.h>
+
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
 
@@ -25,18 +28,25 @@ double WaveTrain::variance() const {
 
 WaveTrain regular_wave(double height, double period, double heading, double phase, double depth, Ramp ramp,
                        double gravity) {
-  if (!(height >= 0.0) || !(period > 0.0))
-    throw std::invalid_argument("regular wave: expected height >= 0 m and period > 0 s; found H = " +
-                                std::to_string(height) + " m, T = " + std::to_string(period) + " s");
+  if (!(height >= 0.0)) throw ParameterError("height", fmt::format("H = {:g} m", height), "a wave height >= 0 m");
+  if (!(period > 0.0)) throw ParameterError("period", fmt::format("T = {:g} s", period), "a wave period > 0 s");
   const double w = 2.0 * M_PI / period;
   return WaveTrain({{0.5 * height, w, wave_number(w, depth, gravity), heading, phase}}, ramp, depth);
 }
 
 WaveTrain irregular_sea(const std::function<double(double)>& spectrum, const IrregularSeaSettings& s) {
-  if (!(s.min_frequency > 0.0) || !(s.max_frequency > s.min_frequency) || s.num_components < 1)
-    throw std::invalid_argument("irregular sea: expected 0 < w_min < w_max and at least one component; found w_min = " +
-                                std::to_string(s.min_frequency) + ", w_max = " + std::to_string(s.max_frequency) +
-                                ", N = " + std::to_string(s.num_components));
+  if (!(s.min_frequency > 0.0))
+    throw ParameterError("min_frequency", fmt::format("{:g} rad/s", s.min_frequency), "min_frequency > 0 rad/s");
+  if (!(s.max_frequency > s.min_frequency))
+    throw ParameterError("max_frequency",
+                         fmt::format("{:g} rad/s, not above min_frequency = {:g} rad/s", s.max_frequency,
+                                     s.min_frequency),
+                         "max_frequency > min_frequency");
+  // The upper bound keeps the equal-energy grid (200 N points) and the per-step phasor
+  // products of the excitation within memory and time.
+  if (s.num_components < 1 || s.num_components > 100000)
+    throw ParameterError("num_components", fmt::format("{}", s.num_components),
+                         "a number of components in 1 .. 100000");
   const int n = s.num_components;
   std::vector<double> frequencies(n), amplitudes(n);
   if (s.discretization == FrequencyDiscretization::equal_spacing) {
@@ -58,7 +68,11 @@ WaveTrain irregular_sea(const std::function<double(double)>& spectrum, const Irr
       previous = current;
     }
     const double m0 = cumulative.back();
-    if (!(m0 > 0.0)) throw std::invalid_argument("irregular sea: the spectrum holds no energy in [w_min, w_max]");
+    if (!(m0 > 0.0))
+      throw ParameterError("min_frequency",
+                           fmt::format("a spectrum with no energy in [{:g}, {:g}] rad/s", s.min_frequency,
+                                       s.max_frequency),
+                           "a frequency band [min_frequency, max_frequency] that holds the spectrum's energy");
     int i = 0;
     for (int j = 0; j < n; ++j) {
       const double target = (j + 0.5) / n * m0;

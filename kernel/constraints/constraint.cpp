@@ -1,6 +1,6 @@
 #include "kernel/constraints/constraint.hpp"
 
-#include <stdexcept>
+#include "kernel/parameter_error.hpp"
 
 namespace heavesim {
 namespace {
@@ -30,7 +30,7 @@ std::vector<ConstraintRow> loop_joint_rows(JointKind kind) {
     case JointKind::spherical: return {x, y, z};
     case JointKind::free: break;
   }
-  throw std::invalid_argument("a free joint constrains nothing and cannot close a loop");
+  throw ParameterError("type", "a free joint, which constrains nothing", "a joint type that can close a loop");
 }
 
 }  // namespace heavesim

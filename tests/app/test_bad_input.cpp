@@ -72,5 +72,30 @@ TEST(BadInput, BadCommandLineOverrideIsBadInput) {
   EXPECT_NE(result.output.find("--set solver.t_end"), std::string::npos) << result.output;
 }
 
+TEST(BadInput, DomainRuleReachedThroughAnOverrideIsBadInputAtThatKey) {
+  // The kernel of 21 samples cannot hold a state space of order 12: hydro's rule
+  // (state_space.cpp), reported at the overridden key, not as exit code 1.
+  const testing::CommandResult result = testing::run_command_line(
+      testing::heavesim_binary() + " check " + testing::source_path("cases/hydro/heave_decay.yaml") +
+      " --set 'forces[radiation].kernel_step=3'");
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find("--set forces[radiation].kernel_step"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find(": forces[1].kernel_step: found a kernel of 21 samples"), std::string::npos)
+      << result.output;
+}
+
+TEST(BadInput, DomainCodeStatesItsRulesAsParameterErrors) {
+  // kernel/, hydro/ and control/ report a parameter they cannot work with as a
+  // ParameterError (field, found, expected), which the application maps to the case key;
+  // a std::invalid_argument would reach main as exit code 1 with no file or key.
+  for (const char* folder : {"kernel", "hydro", "control"})
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(testing::source_path(folder))) {
+      if (entry.path().extension() != ".cpp" && entry.path().extension() != ".hpp") continue;
+      std::ifstream in(entry.path());
+      const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      EXPECT_EQ(text.find("throw std::invalid_argument"), std::string::npos) << entry.path();
+    }
+}
+
 }  // namespace
 }  // namespace heavesim

@@ -1,0 +1,72 @@
+#include "hydro/elements/element_factories.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "hydro/elements/radiation_convolution.hpp"
+#include "hydro/elements/radiation_memory.hpp"
+#include "kernel/parameter_error.hpp"
+
+namespace heavesim::hydro {
+
+std::vector<std::pair<int, int>> realised_mode_pairs(const RetardationKernel& kernel, const ModeSet& modes) {
+  Matrix6 largest = Matrix6::Zero();
+  for (const Matrix6& K : kernel.values) largest = largest.cwiseMax(K.cwiseAbs());
+  std::vector<std::pair<int, int>> pairs;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      if (modes[i] && modes[j] && largest(i, j) > 0.0 && largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
+        pairs.emplace_back(i, j);
+  return pairs;
+}
+
+void keep_modes(RetardationKernel& kernel, const ModeSet& modes) {
+  for (Matrix6& K : kernel.values)
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j)
+        if (!modes[i] || !modes[j]) K(i, j) = 0.0;
+}
+
+std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, const ModeSet& modes, int order) {
+  std::vector<ModePairStateSpace> systems;
+  for (const auto& [i, j] : realised_mode_pairs(kernel, modes)) systems.push_back(realize_kernel_entry(kernel, i, j, order));
+  for (const ModePairStateSpace& realised : systems)
+    if (!realised.stable)
+      throw ParameterError("state_space_order",
+                           fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
+                                       realised.force_mode + 1, realised.velocity_mode + 1, order, realised.r_squared),
+                           "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
+  return systems;
+}
+
+std::unique_ptr<ForceElement> radiation_memory(std::string name, int link, const RadiationData& radiation,
+                                               const RadiationMemorySettings& settings) {
+  check_state_space_order(settings.state_space_order);  // also when the memory is a convolution
+  RetardationKernel kernel = retardation_kernel(radiation, settings.kernel_duration, settings.kernel_step);
+  if (settings.convolution) {
+    keep_modes(kernel, settings.modes);
+    return std::make_unique<RadiationConvolution>(std::move(name), link, std::move(kernel));
+  }
+  return std::make_unique<RadiationMemory>(std::move(name), link,
+                                           realize_memory(kernel, settings.modes, settings.state_space_order));
+}
+
+Matrix6 restoring_stiffness(const LinearHydrostaticsSettings& s) {
+  if (!s.stiffness_includes_gravity) return s.stiffness;
+  return s.stiffness - wamit_gravitational_stiffness(s.body_mass, s.center_of_mass, s.gravity);
+}
+
+Vector6 buoyancy_load(const LinearHydrostaticsSettings& s) {
+  Vector6 load = Vector6::Zero();
+  load[2] = s.displaced_volume ? s.water_density * s.gravity * *s.displaced_volume : s.body_mass * s.gravity;
+  return load;
+}
+
+std::unique_ptr<LinearRestoring> linear_hydrostatics(std::string name, int link,
+                                                     const LinearHydrostaticsSettings& settings) {
+  return std::make_unique<LinearRestoring>(std::move(name), link, restoring_stiffness(settings),
+                                           buoyancy_load(settings), Transform::Identity());
+}
+
+}  // namespace heavesim::hydro
