@@ -21,7 +21,7 @@
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
 #include "kernel/algorithms/energy.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "validation/checks/validation_suite.hpp"
 
 namespace heavesim::bench {

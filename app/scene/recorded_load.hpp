@@ -7,7 +7,7 @@
 #include <string>
 
 #include "hydro/waves/wave_train.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

@@ -5,7 +5,7 @@
 // only the diffraction part of the BEM excitation (or none), never with the full X.
 // No allocation in apply().
 #include "hydro/hydrostatics/froude_krylov.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim::hydro {
 

@@ -3,7 +3,7 @@
 // (wetted_hull.hpp): force and moment of the hydrostatic pressure rho g (-z) on the
 // instantaneous wetted surface. Gravity is the kernel's; no allocation in apply().
 #include "hydro/hydrostatics/wetted_hull.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim::hydro {
 

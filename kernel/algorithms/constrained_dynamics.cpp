@@ -1,6 +1,6 @@
 #include "kernel/algorithms/constrained_dynamics.hpp"
 
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 

@@ -10,7 +10,7 @@
 #include <algorithm>
 
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

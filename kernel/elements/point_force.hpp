@@ -2,7 +2,7 @@
 // A force of fixed world direction and magnitude on a body point (a hook load, the
 // push of SUNDIALS' slider-crank example).
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

@@ -1,6 +1,6 @@
 #include "kernel/elements/spring_damper.hpp"
 
-#include "kernel/system/ode_system.hpp"
+#include "kernel/math/numerical_error.hpp"
 
 namespace heavesim {
 

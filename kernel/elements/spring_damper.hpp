@@ -3,7 +3,7 @@
 // spring of SUNDIALS' slider-crank example). Tension T = k (l - l0) + c dl/dt [N]
 // pulls the points together along the line joining them.
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

@@ -30,7 +30,7 @@
 // is retried in halves, down to 1/1024 of it, before the run stops with a diagnosis.
 #include <string>
 
-#include "kernel/algorithms/regularized_symmetric_solver.hpp"
+#include "kernel/math/regularized_symmetric_solver.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/system/second_order_system.hpp"
 

@@ -7,7 +7,7 @@
 // convention): composite and articulated inertias then add without transforms.
 #include <Eigen/Cholesky>
 
-#include "kernel/algorithms/regularized_symmetric_solver.hpp"
+#include "kernel/math/regularized_symmetric_solver.hpp"
 #include "kernel/model/model.hpp"
 
 namespace heavesim {

@@ -10,7 +10,7 @@
 #include "kernel/algorithms/inverse_dynamics_derivatives.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {

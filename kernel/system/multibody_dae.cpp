@@ -23,8 +23,8 @@
 #include <Eigen/QR>
 
 #include "kernel/algorithms/configuration.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/algorithms/projection.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {

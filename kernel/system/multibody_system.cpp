@@ -5,8 +5,8 @@
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/algorithms/projection.hpp"
 
 namespace heavesim {
 

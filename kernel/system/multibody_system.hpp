@@ -15,7 +15,7 @@
 
 #include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/system/dae_system.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 #include "kernel/system/second_order_system.hpp"
 
 namespace heavesim {

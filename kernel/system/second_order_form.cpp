@@ -5,7 +5,7 @@
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {

@@ -1,4 +1,4 @@
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/projection.hpp"
 
 #include <Eigen/QR>
 
@@ -6,7 +6,7 @@
 #include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 namespace {
