@@ -3,9 +3,9 @@
 #include <cmath>
 
 #include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/projection.hpp"
 
 namespace heavesim {
@@ -14,9 +14,7 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
     : model_(std::move(model)),
       settings_(settings),
       data_(*model_),
-      scratch_data_(*model_),
       forces_(*model_),
-      scratch_forces_(*model_),
       total_loads_(model_->num_links(), Force::Zero()),
       size_(model_->nq + model_->nv),
       q_(VectorX::Zero(model_->nq)),
@@ -38,20 +36,41 @@ VectorX MultibodySystem::initial_state(const VectorX& q0, const VectorX& v0) con
   return y;
 }
 
-void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
+void MultibodySystem::compute_kinematics(const VectorX& y) {
   const Model& model = *model_;
+  q_ = y.head(model.nq);
+  v_ = y.segment(model.nq, model.nv);
   update_positions(model, data_, q_);
   update_velocities(model, data_, q_, v_);
+}
+
+void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
+  const Model& model = *model_;
+  compute_kinematics(y);
   forces_.clear();
   add_joint_element_forces(model, q_, v_, forces_.joint_force);
   for (std::size_t e = 0; e < elements_.size(); ++e)
     elements_[e]->apply(t, model, data_, y.segment(state_offsets_[e], elements_[e]->state_size()), forces_);
 }
 
+void MultibodySystem::applied_forces_at(double t, const Data& stages, const VectorX& q, const VectorX& v,
+                                        const VectorX& y, AppliedForces& forces) const {
+  const Model& model = *model_;
+  forces.clear();
+  add_joint_element_forces(model, q, v, forces.joint_force);
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    elements_[e]->apply(t, model, stages, y.segment(state_offsets_[e], elements_[e]->state_size()), forces);
+}
+
+bool MultibodySystem::has_applied_state_dependence() const {
+  if (!elements_.empty()) return true;
+  for (int i = 1; i < model_->num_links(); ++i)
+    if (model_->joints[i].spring || model_->joints[i].limits) return true;
+  return false;
+}
+
 void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
   const Model& model = *model_;
-  q_ = y.head(model.nq);
-  v_ = y.segment(model.nq, model.nv);
   compute_stages_and_forces(t, y);
   if (model.has_constraints()) {
     constrained_forward_dynamics(model, data_, t, forces_.joint_force, forces_.external_force_world);
@@ -93,36 +112,12 @@ void MultibodySystem::element_state_derivatives(double t, const VectorX& y, cons
   }
 }
 
-void MultibodySystem::derivative(double t, const VectorX& y, VectorX& ydot) {
+void MultibodySystem::state_derivative(double t, const VectorX& y, VectorX& ydot) {
   const Model& model = *model_;
   compute_accelerations(t, y);
   configuration_derivative(model, q_, v_, ydot.head(model.nq));
   ydot.segment(model.nq, model.nv) = data_.qdd;
   element_state_derivatives(t, y, data_, ydot.tail(size_ - model.nq - model.nv));
-}
-
-void MultibodySystem::project(double t, VectorX& y) {
-  const Model& model = *model_;
-  q_ = y.head(model.nq);
-  normalize_configuration(model, q_);
-  if (model.has_constraints()) {
-    v_ = y.segment(model.nq, model.nv);
-    const ProjectionResult result = project_to_constraints(model, data_, t, q_, v_, settings_.projection_tolerance,
-                                                           settings_.projection_iterations);
-    if (!result.converged) {
-      int worst = 0;
-      data_.constraint_residual.cwiseAbs().maxCoeff(&worst);
-      throw NumericalError(t,
-                           "constraint projection did not converge: |Phi| = " +
-                               std::to_string(result.position_residual) + " after " +
-                               std::to_string(result.iterations) + " iterations, worst at " +
-                               describe_constraint_row(model, worst),
-                           "the step was too large for the loop to be restored: reduce solver.step or the "
-                           "tolerances, or check for a singular configuration");
-    }
-    y.segment(model.nq, model.nv) = v_;
-  }
-  y.head(model.nq) = q_;
 }
 
 void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reactions) {
