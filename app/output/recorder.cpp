@@ -150,18 +150,14 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   if (output.forces) define_element_channels();
 
   if (output.energy) {
+    // The energies of the sample, computed once per record().
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
-         [&system](double, double* out) { out[0] = kinetic_energy(system.model(), system.data()); }});
-    add({"/signals/potential_energy", 0, "J", "gravitational plus joint-spring potential energy", {},
-         [&system](double, double* out) {
-           out[0] = gravity_potential_energy(system.model(), system.data()) +
-                    joint_elastic_energy(system.model(), system.configuration());
-         }});
-    add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {}, [&system](double, double* out) {
-           out[0] = kinetic_energy(system.model(), system.data()) +
-                    gravity_potential_energy(system.model(), system.data()) +
-                    joint_elastic_energy(system.model(), system.configuration());
-         }});
+         [this](double, double* out) { out[0] = energy_.kinetic; }});
+    add({"/signals/potential_energy", 0, "J",
+         "gravitational, joint-spring and force-element (springs, gas, restoring, contact) potential energy", {},
+         [this](double, double* out) { out[0] = energy_.potential; }});
+    add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {},
+         [this](double, double* out) { out[0] = energy_.total; }});
   }
 }
 
@@ -237,6 +233,19 @@ void Recorder::record(double t, const VectorX& y) {
                     element_values_[e]);
   }
   compensators_.observe(t, y);
+  // T + V with V = gravity + joint springs + what the force elements store; summed left
+  // to right so that a scene whose elements store nothing gives the same digits as T + V_g + V_j.
+  double element_energy = 0.0;
+  for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    element_energy +=
+        element.potential_energy(system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()));
+  }
+  const double gravity = gravity_potential_energy(system.model(), system.data());
+  const double joint_springs = joint_elastic_energy(system.model(), system.configuration());
+  energy_.kinetic = kinetic_energy(system.model(), system.data());
+  energy_.potential = gravity + joint_springs + element_energy;
+  energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
   csv_row_.clear();
   for (Channel& channel : channels_) {
     row_.resize(std::max(channel.columns, 1));
@@ -252,9 +261,7 @@ void Recorder::record(double t, const VectorX& y) {
     joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
     if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
-  const double kinetic = kinetic_energy(system.model(), system.data());
-  const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
-                        joint_elastic_energy(system.model(), system.configuration());
+  const double kinetic = energy_.kinetic, energy = energy_.total;
   if (samples_ == 0) initial_energy_ = energy;
   max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
   const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);

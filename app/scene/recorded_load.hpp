@@ -41,6 +41,10 @@ class RecordedLoad : public ForceElement {
                         Eigen::Ref<VectorX> zdot) const override {
     element_->state_derivative(t, model, data, z, zdot);
   }
+  ElementDependencies dependencies() const override { return element_->dependencies(); }
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override {
+    return element_->potential_energy(model, data, z);
+  }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override {

@@ -22,6 +22,8 @@ class FroudeKrylovForce : public ForceElement {
                                                      waves_, t, density_, gravity_);
     forces.external_force_world[link_] += Force(load.moment, load.force);  // moment already about the world origin
   }
+  /// Time (the incident wave) and the body's pose.
+  ElementDependencies dependencies() const override { return {true, true, false, false}; }
 
  private:
   std::string name_;

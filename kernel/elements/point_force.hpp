@@ -14,6 +14,8 @@ class PointForce : public ForceElement {
   void apply(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, AppliedForces& forces) const override {
     forces.add_force_at_point(point_.link, point_.position_world(data), force_world_);
   }
+  /// The point's place (the moment about the world origin).
+  ElementDependencies dependencies() const override { return {false, true, false, false}; }
 
  private:
   std::string name_;

@@ -15,6 +15,11 @@ SpringDamper::State SpringDamper::state_at(const Vector3& pa, const Vector3& pb,
   return {length, rate, parameters_.stiffness * (length - parameters_.rest_length) + parameters_.damping * rate};
 }
 
+double SpringDamper::potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const {
+  const double extension = (b_.position_world(data) - a_.position_world(data)).norm() - parameters_.rest_length;
+  return 0.5 * parameters_.stiffness * extension * extension;
+}
+
 void SpringDamper::apply(double t, const Model&, const Data& data, Eigen::Ref<const VectorX>,
                          AppliedForces& forces) const {
   const Vector3 pa = a_.position_world(data), pb = b_.position_world(data);

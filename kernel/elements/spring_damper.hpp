@@ -20,6 +20,10 @@ class SpringDamper : public ForceElement {
   const std::string& name() const override { return name_; }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
+  /// The end points' places and velocities.
+  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  /// V = k (l - l0)^2 / 2 [J].
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override;
   /// Length [m], its rate [m/s] and the tension [N] at the current stages.
   struct State {
     double length, length_rate, tension;

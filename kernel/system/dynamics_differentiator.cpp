@@ -47,6 +47,9 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
   out.force_v = data.dtau_dv;
   out.mass = mass_matrix(model, data);
 
+  // Column groups that no element (nor joint element) depends on are exactly zero and
+  // are skipped (ElementDependencies).
+  const ElementDependencies& depends = system.applied_dependencies();
   const bool applied = system.has_applied_state_dependence();
   if (!applied && m == 0) return;
   constexpr double h = 1e-7;
@@ -73,7 +76,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
         ggl->jv_q.col(k).noalias() = jacobian_change_ * v;
       }
     }
-    if (applied) {
+    if (depends.configuration) {
       update_velocities(model, scratch_data_, q_perturbed_, v);
       system.applied_forces_at(t, scratch_data_, q_perturbed_, v, y, scratch_forces_);
       generalized_force(data, scratch_forces_, applied_perturbed_);
@@ -89,7 +92,8 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
   v_perturbed_ = v;
   y_perturbed_ = y;
   update_positions(model, scratch_data_, q);
-  for (int k = 0; k < nv + nz; ++k) {
+  const int first_column = depends.velocity ? 0 : nv, end_column = depends.element_states ? nv + nz : nv;
+  for (int k = first_column; k < end_column; ++k) {
     const bool speed = k < nv;
     if (speed)
       v_perturbed_[k] += h;

@@ -20,11 +20,20 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
       q_(VectorX::Zero(model_->nq)),
       v_(VectorX::Zero(model_->nv)),
       tau_total_(VectorX::Zero(model_->nv)),
-      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {}
+      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {
+  bool joint_elements = false;
+  for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
+  applied_dependencies_ = {false, joint_elements, joint_elements, false};
+}
 
 void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
   state_offsets_.push_back(size_);
   size_ += element->state_size();
+  const ElementDependencies d = element->dependencies();
+  applied_dependencies_.time |= d.time;
+  applied_dependencies_.configuration |= d.configuration;
+  applied_dependencies_.velocity |= d.velocity;
+  applied_dependencies_.element_states |= d.element_states && element->state_size() > 0;
   elements_.push_back(std::move(element));
 }
 
@@ -60,13 +69,6 @@ void MultibodySystem::applied_forces_at(double t, const Data& stages, const Vect
   add_joint_element_forces(model, q, v, forces.joint_force);
   for (std::size_t e = 0; e < elements_.size(); ++e)
     elements_[e]->apply(t, model, stages, y.segment(state_offsets_[e], elements_[e]->state_size()), forces);
-}
-
-bool MultibodySystem::has_applied_state_dependence() const {
-  if (!elements_.empty()) return true;
-  for (int i = 1; i < model_->num_links(); ++i)
-    if (model_->joints[i].spring || model_->joints[i].limits) return true;
-  return false;
 }
 
 void MultibodySystem::compute_accelerations(double t, const VectorX& y) {

@@ -63,8 +63,13 @@ class MultibodySystem {
                          AppliedForces& forces) const;
   /// dz/dt of every element at (t, y) on the stages in `data`.
   void element_state_derivatives(double t, const VectorX& y, const Data& data, Eigen::Ref<VectorX> zdot) const;
-  /// Whether the applied forces depend on the state at all (joint springs or limits, elements).
-  bool has_applied_state_dependence() const;
+  /// What the applied forces and element-state rates depend on, over every element and
+  /// the joint elements (springs, limits: q and v).
+  const ElementDependencies& applied_dependencies() const { return applied_dependencies_; }
+  /// Whether the applied forces depend on the state (q, v or z) at all.
+  bool has_applied_state_dependence() const {
+    return applied_dependencies_.configuration || applied_dependencies_.velocity || applied_dependencies_.element_states;
+  }
   /// Names the first joint whose entry of per_coordinate (nv) is not finite.
   [[noreturn]] void report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const;
 
@@ -92,6 +97,7 @@ class MultibodySystem {
   AlignedVector<Force> total_loads_;
   std::vector<std::unique_ptr<ForceElement>> elements_;
   std::vector<int> state_offsets_;
+  ElementDependencies applied_dependencies_;
   int size_;
   VectorX q_, v_, tau_total_, kkt_mismatch_;
 };
