@@ -226,6 +226,11 @@ void Recorder::define_element_channels() {
 void Recorder::record(double t, const VectorX& y) {
   MultibodySystem& system = *scene_.system;
   system.evaluate(t, y, needs_reactions_);
+  // Everything below reads the stages of this one evaluation; require_stages catches a
+  // read after something evaluated the system again (a stale read).
+  const long evaluation = system.data().stages.evaluation;
+  const unsigned stages = StageMarker::positions | StageMarker::velocities | StageMarker::accelerations |
+                          (needs_reactions_ ? StageMarker::reactions : 0u);
   for (std::size_t e = 0; e < element_values_.size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
     if (element_values_[e].empty()) continue;
@@ -246,6 +251,7 @@ void Recorder::record(double t, const VectorX& y) {
   energy_.kinetic = kinetic_energy(system.model(), system.data());
   energy_.potential = gravity + joint_springs + element_energy;
   energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
+  require_stages(system.data(), stages, t, evaluation);
   csv_row_.clear();
   for (Channel& channel : channels_) {
     row_.resize(std::max(channel.columns, 1));
@@ -255,6 +261,7 @@ void Recorder::record(double t, const VectorX& y) {
     if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
   }
   if (csv_) csv_->write_row(csv_row_);
+  require_stages(system.data(), stages, t, evaluation);
 
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
     const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();

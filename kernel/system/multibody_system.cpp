@@ -56,6 +56,7 @@ void MultibodySystem::compute_kinematics(const VectorX& y) {
 void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
   const Model& model = *model_;
   compute_kinematics(y);
+  data_.stages.time = t;
   forces_.clear();
   add_joint_element_forces(model, q_, v_, forces_.joint_force);
   for (std::size_t e = 0; e < elements_.size(); ++e)
