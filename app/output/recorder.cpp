@@ -193,7 +193,7 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
          labels, [&system, &constraint, rows](double, double* out) {
            Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
          }});
-    if (constraint.type == Constraint::Type::coupler || constraint.type == Constraint::Type::driver) continue;
+    if (!constraint.acts_on_frames()) continue;
     // The wrench on side B (the loop joint's child side) about frame B's origin.
     auto wrench_at_b = [&system, &constraint]() {
       const Force f = constraint_wrench(system.model(), system.data(), constraint, system.data().constraint_multipliers);
