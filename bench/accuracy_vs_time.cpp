@@ -161,7 +161,7 @@ Result measure(const Problem& problem, const Method& method, double parameter) {
   }
   const CaseDefinition definition = load_case(validation::project_file(problem.case_path), overrides);
   Scene scene = build_scene(definition);
-  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
   const std::size_t samples = static_cast<std::size_t>(std::lround(problem.t_end / problem.output_interval)) + 1;
   const int nq = scene.model->nq;
   std::vector<double> times(samples, 0.0);

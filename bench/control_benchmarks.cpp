@@ -30,7 +30,7 @@ void hydraulic_c2(benchmark::State& state) {
   double min_crown = 1e300, max_crown = -1e300;
   for (auto _ : state) {
     Scene scene = build_scene(definition);
-    std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+    std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
     const int crown = scene.model->link_index("crown");
     min_crown = 1e300, max_crown = -1e300;
     const RunOutcome outcome =

@@ -21,7 +21,7 @@
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
 #include "kernel/algorithms/energy.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "validation/checks/validation_suite.hpp"
 
 namespace heavesim::bench {
@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
   VectorX phi(model.num_constraint_rows);
   double max_phi = 0.0, max_jv = 0.0, max_balance = 0.0, max_kinetic = 0.0, initial_energy = 0.0, max_angle = 0.0;
   long samples = 0;
-  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
   const double start = bench::cpu_seconds();
   const RunOutcome outcome =
       run_simulation(scene, definition.solver, definition.output.interval, *integrator, [&](double t, const VectorX& y) {

@@ -62,7 +62,7 @@ Run run(const std::string& label, const std::vector<std::string>& overrides, int
     for (int repetition = 0; repetition < repetitions; ++repetition) {
       Scene scene = build_scene(definition);  // outside the timing: reading the BEM files, realising K(t)
       result.memory_states = scene.system->size() - scene.model->nq - scene.model->nv;
-      std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+      std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
       result.xi.clear();
       result.xi.reserve(static_cast<std::size_t>((definition.solver.t_end - definition.solver.t_start) /
                                                  definition.output.interval) + 2);

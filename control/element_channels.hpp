@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

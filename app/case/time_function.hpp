@@ -13,7 +13,7 @@
 #include <optional>
 #include <string>
 
-#include "kernel/constraints/constraint.hpp"
+#include "kernel/model/constraint.hpp"
 
 namespace mu {
 class Parser;

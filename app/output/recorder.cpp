@@ -6,7 +6,7 @@
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 namespace {
@@ -150,18 +150,14 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   if (output.forces) define_element_channels();
 
   if (output.energy) {
+    // The energies of the sample, computed once per record().
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
-         [&system](double, double* out) { out[0] = kinetic_energy(system.model(), system.data()); }});
-    add({"/signals/potential_energy", 0, "J", "gravitational plus joint-spring potential energy", {},
-         [&system](double, double* out) {
-           out[0] = gravity_potential_energy(system.model(), system.data()) +
-                    joint_elastic_energy(system.model(), system.configuration());
-         }});
-    add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {}, [&system](double, double* out) {
-           out[0] = kinetic_energy(system.model(), system.data()) +
-                    gravity_potential_energy(system.model(), system.data()) +
-                    joint_elastic_energy(system.model(), system.configuration());
-         }});
+         [this](double, double* out) { out[0] = energy_.kinetic; }});
+    add({"/signals/potential_energy", 0, "J",
+         "gravitational, joint-spring and force-element (springs, gas, restoring, contact) potential energy", {},
+         [this](double, double* out) { out[0] = energy_.potential; }});
+    add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {},
+         [this](double, double* out) { out[0] = energy_.total; }});
   }
 }
 
@@ -197,7 +193,7 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
          labels, [&system, &constraint, rows](double, double* out) {
            Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
          }});
-    if (constraint.type == Constraint::Type::coupler || constraint.type == Constraint::Type::driver) continue;
+    if (!constraint.acts_on_frames()) continue;
     // The wrench on side B (the loop joint's child side) about frame B's origin.
     auto wrench_at_b = [&system, &constraint]() {
       const Force f = constraint_wrench(system.model(), system.data(), constraint, system.data().constraint_multipliers);
@@ -230,6 +226,11 @@ void Recorder::define_element_channels() {
 void Recorder::record(double t, const VectorX& y) {
   MultibodySystem& system = *scene_.system;
   system.evaluate(t, y, needs_reactions_);
+  // Everything below reads the stages of this one evaluation; require_stages catches a
+  // read after something evaluated the system again (a stale read).
+  const long evaluation = system.data().stages.evaluation;
+  const unsigned stages = StageMarker::positions | StageMarker::velocities | StageMarker::accelerations |
+                          (needs_reactions_ ? StageMarker::reactions : 0u);
   for (std::size_t e = 0; e < element_values_.size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
     if (element_values_[e].empty()) continue;
@@ -237,6 +238,20 @@ void Recorder::record(double t, const VectorX& y) {
                     element_values_[e]);
   }
   compensators_.observe(t, y);
+  // T + V with V = gravity + joint springs + what the force elements store; summed left
+  // to right so that a scene whose elements store nothing gives the same digits as T + V_g + V_j.
+  double element_energy = 0.0;
+  for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
+    const ForceElement& element = *system.force_elements()[e];
+    element_energy +=
+        element.potential_energy(system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()));
+  }
+  const double gravity = gravity_potential_energy(system.model(), system.data());
+  const double joint_springs = joint_elastic_energy(system.model(), system.configuration());
+  energy_.kinetic = kinetic_energy(system.model(), system.data());
+  energy_.potential = gravity + joint_springs + element_energy;
+  energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
+  require_stages(system.data(), stages, t, evaluation);
   csv_row_.clear();
   for (Channel& channel : channels_) {
     row_.resize(std::max(channel.columns, 1));
@@ -246,15 +261,14 @@ void Recorder::record(double t, const VectorX& y) {
     if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
   }
   if (csv_) csv_->write_row(csv_row_);
+  require_stages(system.data(), stages, t, evaluation);
 
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
     const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
     joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
     if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
-  const double kinetic = kinetic_energy(system.model(), system.data());
-  const double energy = kinetic + gravity_potential_energy(system.model(), system.data()) +
-                        joint_elastic_energy(system.model(), system.configuration());
+  const double kinetic = energy_.kinetic, energy = energy_.total;
   if (samples_ == 0) initial_energy_ = energy;
   max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
   const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);

@@ -71,6 +71,9 @@ class Recorder {
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
+  struct SampleEnergy {
+    double kinetic = 0.0, potential = 0.0, total = 0.0;  // J, at the last record()
+  } energy_;
   std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
   std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample

@@ -8,7 +8,7 @@ RunOutcome run_simulation(Scene& scene, const SolverSettings& solver, double out
                           Integrator& integrator, const Observer& observe) {
   const long intervals = std::max(1L, std::lround((solver.t_end - solver.t_start) / output_interval));
   RunOutcome outcome;
-  integrator.initialize(*scene.system, solver.t_start, scene.initial_state);
+  integrator.initialize(solver.t_start, scene.initial_state);
   outcome.time_reached = solver.t_start;
   bool go_on = observe(solver.t_start, integrator.state());
   for (long k = 1; k <= intervals && go_on; ++k) {

@@ -4,10 +4,11 @@
 // axes, appended to the wrapped element's own channels; optionally the incident wave
 // elevation [m] at the reference point. Depends on the kernel and hydro/waves only.
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "hydro/waves/wave_train.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 
@@ -41,9 +42,17 @@ class RecordedLoad : public ForceElement {
                         Eigen::Ref<VectorX> zdot) const override {
     element_->state_derivative(t, model, data, z, zdot);
   }
+  ElementDependencies dependencies() const override { return element_->dependencies(); }
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override {
+    return element_->potential_energy(model, data, z);
+  }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override {
+    // The wrapped element reads the position and velocity stages at t.
+    if ((data.stages.current & (StageMarker::positions | StageMarker::velocities)) !=
+        (StageMarker::positions | StageMarker::velocities))
+      throw std::logic_error("recorded load '" + name() + "': the position and velocity stages are not current");
     if (own_ > 0) element_->outputs(t, model, data, z, values.first(static_cast<std::size_t>(own_)));
     scratch_.clear();
     element_->apply(t, model, data, z, scratch_);

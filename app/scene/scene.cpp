@@ -137,11 +137,12 @@ Scene build_scene(const CaseDefinition& definition) {
   // Driven coordinates start on their prescribed motion, so that assembly does not
   // move the other coordinates to meet them.
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.type != Constraint::Type::driver) continue;
-    const Joint& joint = model.joints[constraint.joint_a];
-    const DriverMotion start = constraint.motion(definition.solver.t_start);
-    q0[joint.q_index + constraint.coordinate] = start.position;
-    v0[joint.v_index + constraint.coordinate] = start.velocity;
+    const auto* driver = std::get_if<DriverConstraint>(&constraint.kind);
+    if (!driver) continue;
+    const Joint& joint = model.joints[driver->joint];
+    const DriverMotion start = driver->motion(definition.solver.t_start);
+    q0[joint.q_index + driver->coordinate] = start.position;
+    v0[joint.v_index + driver->coordinate] = start.velocity;
   }
   if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
   add_ground_contacts(definition, model, *scene.system, q0);

@@ -3,7 +3,7 @@
 #include <memory>
 
 #include "app/case/case_definition.hpp"
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/projection.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {

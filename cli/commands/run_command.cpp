@@ -78,7 +78,7 @@ int run_command(const RunOptions& options) {
   Recorder recorder(definition, scene, &file, csv ? &*csv : nullptr);
 
   const SolverSettings& solver = definition.solver;
-  std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator);
+  std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator, *scene.system);
   ProgressLine progress(solver.t_start, solver.t_end, !options.quiet);
 
   stop_signal = 0;

@@ -30,7 +30,7 @@ StrokeLoopPoles stroke_loop_poles(double mass, const std::vector<StrokeElementFa
   VectorX ydot(system.size());
   // Hold the initial state: a constant force cancels the elements' initial force (the
   // gas spring's preload, which in the rig carries the weight).
-  system.derivative(0.0, y, ydot);
+  system.state_derivative(0.0, y, ydot);
   const double preload = -mass * ydot[1];
   system.add_force_element(std::make_unique<PointForce>("preload", BodyPoint{1, Vector3::Zero()},
                                                         Vector3(0.0, 0.0, preload)));
@@ -43,8 +43,8 @@ StrokeLoopPoles stroke_loop_poles(double mass, const std::vector<StrokeElementFa
     VectorX y_plus = y, y_minus = y;
     y_plus[k] += h;
     y_minus[k] -= h;
-    system.derivative(0.0, y_plus, plus);
-    system.derivative(0.0, y_minus, minus);
+    system.state_derivative(0.0, y_plus, plus);
+    system.state_derivative(0.0, y_minus, minus);
     jacobian.col(k) = (plus - minus) / (2.0 * h);
   }
   const Eigen::EigenSolver<MatrixX> solver(jacobian, false);

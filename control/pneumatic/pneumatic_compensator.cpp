@@ -80,4 +80,20 @@ PneumaticState PneumaticCompensator::evaluate(double t, const Model& model, cons
   return s;
 }
 
+double PneumaticCompensator::potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const {
+  const PneumaticParameters& p = parameters_;
+  const double stroke = stroke_motion(axis_, model, data).stroke;
+  const double V = p.gas_volume + p.piston_area * stroke;
+  const double p0V0 = p.gas_pressure * p.gas_volume;
+  const double n = 0.5 * (p.exponent_compression + p.exponent_expansion);
+  double gas;
+  if (std::abs(n - 1.0) < 1e-12)
+    gas = -p0V0 * std::log(V / p.gas_volume);  // isothermal: the work the gas can still do
+  else if (z.size() > 0)
+    gas = p0V0 * (z[0] - 1.0) / (n - 1.0);  // p V = p0 V0 T/T0
+  else
+    gas = (polytropic_pressure(p.gas_pressure, p.gas_volume, V, n) * V - p0V0) / (n - 1.0);
+  return gas + p.atmospheric_pressure * (V - p.gas_volume) + end_stop_energy(p.end_stops, stroke);
+}
+
 }  // namespace heavesim

@@ -79,6 +79,12 @@ class PneumaticCompensator : public StrokeElement<PneumaticState, PneumaticParam
   /// Throws NumericalError if the gas volume is gone (the stroke ran far past a stop).
   PneumaticState evaluate(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                           double* zdot) const override;
+  /// Energy [J] stored relative to mid-stroke at T0 (s = 0, V = V0, p = p0): the gas's
+  /// (p V - p0 V0) / (n - 1) (its internal energy for n = gamma; -p0 V0 ln(V / V0) for
+  /// n = 1), the atmosphere's p_atm (V - V0) on the rod side, and the end stops' springs.
+  /// -dE/ds is then the conservative part of the force, (p - p_atm) A + stops. With the
+  /// temperature state, p V = p0 V0 T/T0 and n is the mean of n_c and n_e.
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override;
 };
 
 /// The exponent between n_c (compressing, ds/dt < 0) and n_e (expanding) at stroke rate v.

@@ -33,6 +33,13 @@ inline double end_stop_force(const EndStops& stops, double stroke, double rate) 
   return 0.0;
 }
 
+/// Energy [J] stored in the stops' springs at stroke s [m]: k delta^2 / 2 for the
+/// penetration delta beyond a stop (the dampers store nothing).
+inline double end_stop_energy(const EndStops& stops, double stroke) {
+  const double delta = stroke < stops.lower ? stops.lower - stroke : stroke > stops.upper ? stroke - stops.upper : 0.0;
+  return 0.5 * stops.stiffness * delta * delta;
+}
+
 /// Which stop a stroke is in: -1 lower, +1 upper, 0 none.
 inline int end_stop_contact(const EndStops& stops, double stroke) {
   return stroke < stops.lower ? -1 : stroke > stops.upper ? 1 : 0;

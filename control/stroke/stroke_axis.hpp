@@ -13,7 +13,7 @@
 // moving side moves away from the base along +axis (the rods extend);
 // a positive compensator force pushes the moving side along +axis.
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 

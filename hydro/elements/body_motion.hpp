@@ -4,7 +4,7 @@
 // yaw], world axes. Loads come back in the same order ([F; M about the reference
 // point], N and N m, world axes) and are turned into the kernel's spatial force.
 #include "kernel/model/data.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim::hydro {
 

@@ -5,7 +5,7 @@
 // only the diffraction part of the BEM excitation (or none), never with the full X.
 // No allocation in apply().
 #include "hydro/hydrostatics/froude_krylov.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim::hydro {
 
@@ -22,6 +22,8 @@ class FroudeKrylovForce : public ForceElement {
                                                      waves_, t, density_, gravity_);
     forces.external_force_world[link_] += Force(load.moment, load.force);  // moment already about the world origin
   }
+  /// Time (the incident wave) and the body's pose.
+  ElementDependencies dependencies() const override { return {true, true, false, false}; }
 
  private:
   std::string name_;

@@ -43,6 +43,15 @@ class LinearRestoring : public ForceElement {
     const Vector6 load = constant_load_ - stiffness_ * displacement(m.X_world_body, reference_);
     add_load(forces, link_, m.X_world_body.translation(), load);
   }
+  /// The body's pose only.
+  ElementDependencies dependencies() const override { return {false, true, false, false}; }
+  /// V = xi^T K xi / 2 - f0 . xi [J], whose -dV/dxi is the load for a symmetric K (the
+  /// small-motion potential; buoyancy's f0 . xi is the work against the constant
+  /// buoyancy, the weight's own potential being the kernel's).
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX>) const override {
+    const Vector6 xi = displacement(body_motion(model, data, link_).X_world_body, reference_);
+    return 0.5 * xi.dot(stiffness_ * xi) - constant_load_.dot(xi);
+  }
 
  private:
   std::string name_;
@@ -63,6 +72,8 @@ class BodyDamping : public ForceElement {
     const Vector6 load = -linear_ * m.velocity - quadratic_.cwiseProduct(m.velocity.cwiseProduct(m.velocity.cwiseAbs()));
     add_load(forces, link_, m.X_world_body.translation(), load);
   }
+  /// The body's pose (the reference point) and velocity.
+  ElementDependencies dependencies() const override { return {false, true, true, false}; }
 
  private:
   std::string name_;

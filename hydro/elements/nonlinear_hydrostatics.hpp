@@ -3,7 +3,7 @@
 // (wetted_hull.hpp): force and moment of the hydrostatic pressure rho g (-z) on the
 // instantaneous wetted surface. Gravity is the kernel's; no allocation in apply().
 #include "hydro/hydrostatics/wetted_hull.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim::hydro {
 
@@ -14,6 +14,8 @@ class NonlinearHydrostatics : public ForceElement {
   const std::string& name() const override { return name_; }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
+  /// The body's pose only (the still-water surface).
+  ElementDependencies dependencies() const override { return {false, true, false, false}; }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override;

@@ -68,6 +68,7 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
     }
     data.acceleration_world[i] = a;
   }
+  data.stages.current |= StageMarker::accelerations;
   return data.qdd;
 }
 

@@ -1,6 +1,6 @@
 #include "kernel/algorithms/constrained_dynamics.hpp"
 
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 
@@ -24,6 +24,7 @@ const VectorX& constrained_forward_dynamics(const Model& model, Data& data, doub
   data.kkt_solver.solve(data.kkt_rhs, data.constraint_multipliers);
   data.qdd = data.kkt_free_qdd;
   data.qdd.noalias() += data.kkt_minv_jt * data.constraint_multipliers;
+  data.stages.current |= StageMarker::accelerations;  // (the unconstrained path set it already)
   return data.qdd;
 }
 

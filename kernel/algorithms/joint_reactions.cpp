@@ -4,6 +4,7 @@ namespace heavesim {
 
 void compute_joint_wrenches(const Model& model, Data& data, ExternalForces external_forces_world) {
   inverse_dynamics(model, data, data.qdd, external_forces_world);
+  data.stages.current |= StageMarker::reactions;
 }
 
 JointReaction joint_reaction(const Model& model, const Data& data, int joint_index) {

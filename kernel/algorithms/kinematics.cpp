@@ -3,6 +3,7 @@
 namespace heavesim {
 
 void update_positions(const Model& model, Data& data, const VectorX& q) {
+  data.stages.begin_evaluation();
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Link& link = model.links[i];
@@ -48,6 +49,7 @@ void update_velocities(const Model& model, Data& data, const VectorX& q, const V
     data.bias_acceleration_world[i] = bias;
     data.bias_force_world[i] = data.velocity_world[i].cross(link_momentum(model, data, i, data.velocity_world[i]));
   }
+  data.stages.current |= StageMarker::velocities;
 }
 
 }  // namespace heavesim

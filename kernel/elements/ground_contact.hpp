@@ -10,7 +10,7 @@
 #include <algorithm>
 
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 
@@ -45,6 +45,14 @@ class GroundContact : public ForceElement {
   void apply(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, AppliedForces& forces) const override {
     const State s = state(data);
     if (s.force > 0.0) forces.add_force_at_point(point_.link, s.position, Vector3(0.0, 0.0, s.force));
+  }
+  /// The point's place and velocity.
+  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  /// V = k d^2 / 2 [J] while the point penetrates (d > 0), 0 when lifted off: the
+  /// spring part of the contact (the damper stores nothing).
+  double potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const override {
+    const double penetration = parameters_.surface_height - point_.position_world(data).z();
+    return penetration > 0.0 ? 0.5 * parameters_.stiffness * penetration * penetration : 0.0;
   }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, std::span<double> values) const override {

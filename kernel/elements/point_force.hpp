@@ -2,7 +2,7 @@
 // A force of fixed world direction and magnitude on a body point (a hook load, the
 // push of SUNDIALS' slider-crank example).
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 
@@ -14,6 +14,8 @@ class PointForce : public ForceElement {
   void apply(double, const Model&, const Data& data, Eigen::Ref<const VectorX>, AppliedForces& forces) const override {
     forces.add_force_at_point(point_.link, point_.position_world(data), force_world_);
   }
+  /// The point's place (the moment about the world origin).
+  ElementDependencies dependencies() const override { return {false, true, false, false}; }
 
  private:
   std::string name_;

@@ -1,6 +1,6 @@
 #include "kernel/elements/spring_damper.hpp"
 
-#include "kernel/system/ode_system.hpp"
+#include "kernel/math/numerical_error.hpp"
 
 namespace heavesim {
 
@@ -13,6 +13,11 @@ SpringDamper::State SpringDamper::state_at(const Vector3& pa, const Vector3& pb,
   const double length = d.norm();
   const double rate = length > 0.0 ? d.dot(b_.velocity_world(data) - a_.velocity_world(data)) / length : 0.0;
   return {length, rate, parameters_.stiffness * (length - parameters_.rest_length) + parameters_.damping * rate};
+}
+
+double SpringDamper::potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const {
+  const double extension = (b_.position_world(data) - a_.position_world(data)).norm() - parameters_.rest_length;
+  return 0.5 * parameters_.stiffness * extension * extension;
 }
 
 void SpringDamper::apply(double t, const Model&, const Data& data, Eigen::Ref<const VectorX>,

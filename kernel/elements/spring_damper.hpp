@@ -3,7 +3,7 @@
 // spring of SUNDIALS' slider-crank example). Tension T = k (l - l0) + c dl/dt [N]
 // pulls the points together along the line joining them.
 #include "kernel/elements/body_point.hpp"
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 
@@ -20,6 +20,10 @@ class SpringDamper : public ForceElement {
   const std::string& name() const override { return name_; }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
+  /// The end points' places and velocities.
+  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  /// V = k (l - l0)^2 / 2 [J].
+  double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override;
   /// Length [m], its rate [m/s] and the tension [N] at the current stages.
   struct State {
     double length, length_rate, tension;

@@ -19,7 +19,7 @@ int ErkIntegrator::rhs(double t, N_Vector y, N_Vector ydot, void* user_data) {
   auto* self = static_cast<ErkIntegrator*>(user_data);
   return sundials::guarded(self->callback_error_, [&] {
     self->work_y_ = sundials::map(y);
-    self->system_->derivative(t, self->work_y_, self->work_f_);
+    self->system_.derivative(t, self->work_y_, self->work_f_);
     sundials::map(ydot) = self->work_f_;
   });
 }
@@ -28,17 +28,16 @@ int ErkIntegrator::project_step(double t, N_Vector y, void* user_data) {
   auto* self = static_cast<ErkIntegrator*>(user_data);
   return sundials::guarded(self->callback_error_, [&] {
     self->work_y_ = sundials::map(y);
-    self->system_->project(t, self->work_y_);
+    self->system_.project(t, self->work_y_);
     sundials::map(y) = self->work_y_;
   });
 }
 
-void ErkIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
+void ErkIntegrator::initialize(double t0, const VectorX& y0) {
   release();
-  system_ = &system;
   t_ = t0;
   y_ = y0;
-  const int n = system.size();
+  const int n = system_.size();
   work_y_.resize(n);
   work_f_.resize(n);
   y_nv_ = N_VNew_Serial(n, context_);
@@ -65,7 +64,7 @@ void ErkIntegrator::advance_to(double t_out) {
   }
   t_ = t_out;
   y_ = sundials::map(y_nv_);
-  system_->project(t_, y_);
+  system_.project(t_, y_);
 }
 
 IntegratorStatistics ErkIntegrator::statistics() const {

@@ -13,9 +13,10 @@ namespace heavesim {
 /// error estimate; the state is projected (quaternions renormalized) after each step.
 class ErkIntegrator : public Integrator {
  public:
-  ErkIntegrator(const IntegratorSettings& settings, ARKODE_ERKTableID table) : settings_(settings), table_(table) {}
+  ErkIntegrator(OdeSystem& system, const IntegratorSettings& settings, ARKODE_ERKTableID table)
+      : settings_(settings), table_(table), system_(system) {}
   ~ErkIntegrator() override;
-  void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
+  void initialize(double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
   const VectorX& state() const override { return y_; }
   double time() const override { return t_; }
@@ -28,7 +29,7 @@ class ErkIntegrator : public Integrator {
 
   IntegratorSettings settings_;
   ARKODE_ERKTableID table_;
-  OdeSystem* system_ = nullptr;
+  OdeSystem& system_;
   sundials::Context context_;
   sundials::CallbackError callback_error_;
   void* arkode_ = nullptr;

@@ -32,28 +32,25 @@ constexpr int max_halvings = 10;
 
 }  // namespace
 
-HhtIntegrator::HhtIntegrator(const IntegratorSettings& settings) : settings_(settings) {
+HhtIntegrator::HhtIntegrator(SecondOrderSystem& system, const IntegratorSettings& settings)
+    : settings_(settings), system_(system) {
   alpha_ = std::clamp(settings.hht_alpha, -1.0 / 3.0, 0.0);
   gamma_ = 0.5 - alpha_;
   beta_ = 0.25 * (1.0 - alpha_) * (1.0 - alpha_);
 }
 
-void HhtIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
-  system_ = dynamic_cast<SecondOrderSystem*>(&system);
-  if (!system_)
-    throw NumericalError(t0, "the HHT integrator needs a mechanical system (second-order form)",
-                         "use another integrator for this system");
-  nq_ = system_->configuration_size();
-  nv_ = system_->velocity_size();
-  nz_ = system_->element_state_size();
-  m_ = system_->constraint_size();
+void HhtIntegrator::initialize(double t0, const VectorX& y0) {
+  nq_ = system_.configuration_size();
+  nv_ = system_.velocity_size();
+  nz_ = system_.element_state_size();
+  m_ = system_.constraint_size();
   t_ = t0;
   y_ = y0;
   statistics_ = {};
   matrix_step_ = 0.0;
-  system_->initial_accelerations(t0, y_, acceleration_, rate_, multipliers_);
+  system_.initial_accelerations(t0, y_, acceleration_, rate_, multipliers_);
   final_constraint_residual_.setZero(m_);
-  system_->constraint_terms(t0, y_, terms_);
+  system_.constraint_terms(t0, y_, terms_);
   // At t0 the accelerations satisfy the equations of motion exactly: f_0 = -M a_0.
   previous_force_.noalias() = -terms_.mass * acceleration_;
   delta_.resize(nv_);
@@ -78,7 +75,7 @@ void HhtIntegrator::iterate_state(double h) {
   a_.noalias() -= h * y_.segment(nq_, nv_);
   a_.noalias() -= h * h * (0.5 - beta_) * acceleration_;
   a_ /= beta_ * h * h;
-  system_->integrate_configuration(q_start_, delta_, q_step_);
+  system_.integrate_configuration(q_start_, delta_, q_step_);
   y_iterate_.head(nq_) = q_step_;
   y_iterate_.segment(nq_, nv_) = y_.segment(nq_, nv_);
   y_iterate_.segment(nq_, nv_).noalias() += h * (1.0 - gamma_) * acceleration_;
@@ -96,13 +93,13 @@ void HhtIntegrator::build_newton_matrix(double h) {
   // (ID is linear in a), and of h gamma R_z with R_z = zdot - g.
   const double scale = 1.0 + alpha_;
   a_ /= scale;
-  system_->dynamics_derivatives(t_ + h, y_iterate_, a_, derivatives_);
+  system_.dynamics_derivatives(t_ + h, y_iterate_, a_, derivatives_);
   a_ *= scale;
   ++statistics_.jacobian_evaluations;
   const DynamicsDerivatives& d = derivatives_;
   double weight = 0.0;  // c = beta h^2 (1 + alpha) p
   if (m_ > 0) {
-    system_->constraint_terms(t_ + h, y_iterate_, terms_);
+    system_.constraint_terms(t_ + h, y_iterate_, terms_);
     const double constraint_scale = terms_.jacobian.colwise().squaredNorm().maxCoeff();
     const double mass_scale = terms_.mass.diagonal().maxCoeff();
     weight = constraint_scale > 0.0 ? kappa * mass_scale / constraint_scale : 0.0;
@@ -150,7 +147,7 @@ bool HhtIntegrator::try_step(double h) {
   for (int iteration = 0; iteration < max_newton_iterations; ++iteration) {
     a_ /= scale;
     try {
-      system_->dynamics_residual(t1, y_iterate_, a_, zdot_, penalty_, lambda_, residual_.head(nv_),
+      system_.dynamics_residual(t1, y_iterate_, a_, zdot_, penalty_, lambda_, residual_.head(nv_),
                                  residual_.tail(nz_), phi_);
     } catch (const NumericalError& error) {
       // A diverging iterate (not necessarily the model): a smaller step may pass.
@@ -230,7 +227,7 @@ void HhtIntegrator::accept_step(double h) {
   // force stays continuous when the penalty p' (which scales with 1/h^2) changes.
   multipliers_ = force_multipliers_;
   final_constraint_residual_ = phi_;
-  system_->constraint_terms(t_, y_, terms_);
+  system_.constraint_terms(t_, y_, terms_);
   if (m_ > 0) {
     mass_llt_.compute(terms_.mass);
     minv_jt_ = terms_.jacobian.transpose();
@@ -240,7 +237,7 @@ void HhtIntegrator::accept_step(double h) {
     speeds_ = y_.segment(nq_, nv_);
     project(speeds_, terms_.velocity_target);
     y_.segment(nq_, nv_) = speeds_;
-    system_->constraint_bias_at(t_, y_, gamma_target_);
+    system_.constraint_bias_at(t_, y_, gamma_target_);
     project(acceleration_, gamma_target_);
   }
   if (alpha_ != 0.0) {
@@ -249,7 +246,7 @@ void HhtIntegrator::accept_step(double h) {
     // M a + f = 0 at either end, so f cannot be recovered from them).
     zero_acceleration_.setZero(nv_);
     lambda_ = force_multipliers_;
-    system_->dynamics_residual(t_, y_, zero_acceleration_, zdot_, 0.0, lambda_, previous_force_, residual_.tail(nz_),
+    system_.dynamics_residual(t_, y_, zero_acceleration_, zdot_, 0.0, lambda_, previous_force_, residual_.tail(nz_),
                                phi_);
   }
   ++statistics_.steps;

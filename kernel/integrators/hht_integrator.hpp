@@ -30,7 +30,7 @@
 // is retried in halves, down to 1/1024 of it, before the run stops with a diagnosis.
 #include <string>
 
-#include "kernel/algorithms/regularized_symmetric_solver.hpp"
+#include "kernel/math/regularized_symmetric_solver.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/system/second_order_system.hpp"
 
@@ -41,8 +41,8 @@ namespace heavesim {
 
 class HhtIntegrator : public Integrator {
  public:
-  explicit HhtIntegrator(const IntegratorSettings& settings);
-  void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
+  HhtIntegrator(SecondOrderSystem& system, const IntegratorSettings& settings);
+  void initialize(double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
   const VectorX& state() const override { return y_; }
   double time() const override { return t_; }
@@ -63,7 +63,7 @@ class HhtIntegrator : public Integrator {
 
   IntegratorSettings settings_;
   double alpha_, beta_, gamma_;
-  SecondOrderSystem* system_ = nullptr;
+  SecondOrderSystem& system_;
   int nq_ = 0, nv_ = 0, nz_ = 0, m_ = 0;
   double t_ = 0.0;
   VectorX y_;                                  // [q; v; z] at t_

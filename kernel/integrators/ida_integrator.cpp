@@ -32,7 +32,7 @@ int IdaIntegrator::residual(double t, N_Vector y, N_Vector yp, N_Vector r, void*
   return sundials::guarded(self->callback_error_, [&] {
     self->work_y_ = sundials::map(y);
     self->work_yp_ = sundials::map(yp);
-    self->dae_->residual(t, self->work_y_, self->work_yp_, self->work_r_);
+    self->dae_.residual(t, self->work_y_, self->work_yp_, self->work_r_);
     sundials::map(r) = self->work_r_;
   });
 }
@@ -43,7 +43,7 @@ int IdaIntegrator::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vect
   return sundials::guarded(self->callback_error_, [&] {
     self->work_y_ = sundials::map(y);
     self->work_yp_ = sundials::map(yp);
-    self->dae_->jacobian(t, self->work_y_, self->work_yp_, cj, self->work_jacobian_);
+    self->dae_.jacobian(t, self->work_y_, self->work_yp_, cj, self->work_jacobian_);
     self->store_jacobian(J);
   });
 }
@@ -71,18 +71,12 @@ void IdaIntegrator::store_jacobian(SUNMatrix J) const {
   column_start[n] = k;
 }
 
-void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
+void IdaIntegrator::initialize(double t0, const VectorX& y0) {
   release();
-  system_ = &system;
-  dae_ = dynamic_cast<DaeSystem*>(&system);
-  if (!dae_) {
-    ode_residual_ = std::make_unique<OdeResidual>(system);
-    dae_ = ode_residual_.get();
-  }
   t_ = t0;
   state_ = y0;
-  dae_->dae_initial_values(t0, y0, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
-  const int n = dae_->dae_size();
+  dae_.dae_initial_values(t0, y0, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
+  const int n = dae_.dae_size();
   work_r_.resize(n);
   y_nv_ = N_VNew_Serial(n, context_);
   yp_nv_ = N_VNew_Serial(n, context_);
@@ -90,7 +84,7 @@ void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) 
   sundials::map(y_nv_) = work_y_;
   sundials::map(yp_nv_) = work_yp_;
   VectorX mask;
-  dae_->differential_mask(mask);
+  dae_.differential_mask(mask);
   sundials::map(id_nv_) = mask;
 
   ida_ = IDACreate(context_);
@@ -114,11 +108,11 @@ void IdaIntegrator::initialize(OdeSystem& system, double t0, const VectorX& y0) 
   // The system's own Newton matrix if it has one; its first value fixes the sparsity
   // pattern (with a second look at a nudged state, so that values that happen to be
   // zero here do not drop out of the pattern).
-  const bool analytic = dae_->jacobian(t0, work_y_, work_yp_, 1.0, work_jacobian_);
+  const bool analytic = dae_.jacobian(t0, work_y_, work_yp_, 1.0, work_jacobian_);
   if (analytic && settings_.linear_solver == LinearSolver::sparse) {
     MatrixX pattern = work_jacobian_.cwiseAbs();
     VectorX nudged = work_y_ + 1e-3 * VectorX::Ones(n).cwiseProduct(work_y_.cwiseAbs() + VectorX::Ones(n));
-    dae_->jacobian(t0, nudged, work_yp_, 1.7, work_jacobian_);
+    dae_.jacobian(t0, nudged, work_yp_, 1.7, work_jacobian_);
     pattern += work_jacobian_.cwiseAbs();
     sparsity_.clear();
     for (int c = 0; c < n; ++c)
@@ -162,7 +156,7 @@ void IdaIntegrator::advance_to(double t_out) {
   }
   t_ = t_out;
   work_y_ = sundials::map(y_nv_);
-  dae_->state_from_dae(work_y_, state_);
+  dae_.state_from_dae(work_y_, state_);
 }
 
 IntegratorStatistics IdaIntegrator::statistics() const {

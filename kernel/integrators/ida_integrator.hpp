@@ -9,17 +9,16 @@
 
 namespace heavesim {
 
-/// SUNDIALS IDA (variable-order, variable-step BDF) on a DaeSystem: the system's own
-/// implicit form when it has one (the stabilized index-2 form of a multibody model
-/// with loops, with its algebraic multipliers excluded from the error test), else the
-/// ODE written as F = y' - f(t, y). Newton matrices come from the system when it
+/// SUNDIALS IDA (variable-order, variable-step BDF) on a DaeSystem: a multibody
+/// model's stabilized index-2 form (GglDaeForm, with its algebraic multipliers excluded
+/// from the error test), or a plain ODE written as F = y' - f(t, y) (OdeResidual). Newton matrices come from the system when it
 /// provides them (dense, or sparse through KLU), else from IDA's difference quotients.
 /// Suited to stiff force elements (hydraulics, end stops) and closed loops.
 class IdaIntegrator : public Integrator {
  public:
-  explicit IdaIntegrator(const IntegratorSettings& settings) : settings_(settings) {}
+  IdaIntegrator(DaeSystem& system, const IntegratorSettings& settings) : settings_(settings), dae_(system) {}
   ~IdaIntegrator() override;
-  void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
+  void initialize(double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
   const VectorX& state() const override { return state_; }
   double time() const override { return t_; }
@@ -34,9 +33,7 @@ class IdaIntegrator : public Integrator {
   void store_jacobian(SUNMatrix J) const;
 
   IntegratorSettings settings_;
-  OdeSystem* system_ = nullptr;
-  DaeSystem* dae_ = nullptr;
-  std::unique_ptr<OdeResidual> ode_residual_;
+  DaeSystem& dae_;
   sundials::Context context_;
   sundials::CallbackError callback_error_;
   void* ida_ = nullptr;

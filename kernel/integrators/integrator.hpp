@@ -1,6 +1,9 @@
 #pragma once
 // Time integrators behind one small interface: initialize at (t0, y0), then advance
-// to each output time. The caller owns the system.
+// to each output time. Each integrator is bound at construction to the form of the
+// system it needs (RK4 and ERK: OdeSystem; IDA: DaeSystem; HHT: SecondOrderSystem), so
+// a wrong pairing does not compile; make_integrator builds the right form of a
+// MultibodySystem for the chosen method. The caller owns the system.
 #include <memory>
 #include <string>
 
@@ -48,7 +51,8 @@ struct IntegratorStatistics {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  virtual void initialize(OdeSystem& system, double t0, const VectorX& y0) = 0;
+  /// Starts (or restarts) the integration of the bound system at (t0, y0).
+  virtual void initialize(double t0, const VectorX& y0) = 0;
   /// Advances the solution to exactly t_out; throws NumericalError on failure.
   virtual void advance_to(double t_out) = 0;
   virtual const VectorX& state() const = 0;
@@ -56,7 +60,15 @@ class Integrator {
   virtual IntegratorStatistics statistics() const = 0;
 };
 
-std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings);
+class MultibodySystem;
+
+/// The integrator of settings.method on the form of `system` that the method needs
+/// (OdeForm, GglDaeForm or Index3Form), which the returned integrator owns. `system`
+/// must outlive it.
+std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, MultibodySystem& system);
+/// The integrator of settings.method on a plain ODE (IDA on F = y' - f(t, y)); HHT needs
+/// a second-order form and is refused with std::invalid_argument. `system` must outlive it.
+std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, OdeSystem& system);
 std::string integration_method_name(IntegrationMethod method);
 
 }  // namespace heavesim

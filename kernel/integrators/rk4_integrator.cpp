@@ -4,11 +4,10 @@
 
 namespace heavesim {
 
-void Rk4Integrator::initialize(OdeSystem& system, double t0, const VectorX& y0) {
-  system_ = &system;
+void Rk4Integrator::initialize(double t0, const VectorX& y0) {
   t_ = t0;
   y_ = y0;
-  const int n = system.size();
+  const int n = system_.size();
   k1_.resize(n);
   k2_.resize(n);
   k3_.resize(n);
@@ -18,16 +17,16 @@ void Rk4Integrator::initialize(OdeSystem& system, double t0, const VectorX& y0) 
 }
 
 void Rk4Integrator::take_step(double h) {
-  system_->derivative(t_, y_, k1_);
+  system_.derivative(t_, y_, k1_);
   stage_ = y_ + 0.5 * h * k1_;
-  system_->derivative(t_ + 0.5 * h, stage_, k2_);
+  system_.derivative(t_ + 0.5 * h, stage_, k2_);
   stage_ = y_ + 0.5 * h * k2_;
-  system_->derivative(t_ + 0.5 * h, stage_, k3_);
+  system_.derivative(t_ + 0.5 * h, stage_, k3_);
   stage_ = y_ + h * k3_;
-  system_->derivative(t_ + h, stage_, k4_);
+  system_.derivative(t_ + h, stage_, k4_);
   y_ += (h / 6.0) * (k1_ + 2.0 * k2_ + 2.0 * k3_ + k4_);
   t_ += h;
-  system_->project(t_, y_);
+  system_.project(t_, y_);
   statistics_.steps += 1;
   statistics_.rhs_evaluations += 4;
   statistics_.last_step = h;

@@ -8,8 +8,8 @@ namespace heavesim {
 /// (quaternions renormalized), which keeps the order (Hairer, Lubich, Wanner IV.4).
 class Rk4Integrator : public Integrator {
  public:
-  explicit Rk4Integrator(double step) : step_(step) {}
-  void initialize(OdeSystem& system, double t0, const VectorX& y0) override;
+  Rk4Integrator(OdeSystem& system, double step) : step_(step), system_(system) {}
+  void initialize(double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
   const VectorX& state() const override { return y_; }
   double time() const override { return t_; }
@@ -19,7 +19,7 @@ class Rk4Integrator : public Integrator {
   void take_step(double h);
 
   double step_;
-  OdeSystem* system_ = nullptr;
+  OdeSystem& system_;
   double t_ = 0.0;
   VectorX y_, k1_, k2_, k3_, k4_, stage_;
   IntegratorStatistics statistics_;

@@ -1,5 +1,8 @@
 #include "kernel/model/data.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace heavesim {
 
 Data::Data(const Model& model)
@@ -45,6 +48,15 @@ Data::Data(const Model& model)
   aba_D_inverse.resize(n);
   for (int i = 1; i < n; ++i) aba_D_inverse[i] = SmallMatrix::Zero(model.joints[i].nv, model.joints[i].nv);
   aba_u = VectorX::Zero(model.nv);
+}
+
+void require_stages(const Data& data, unsigned required, double t, long evaluation) {
+  const StageMarker& stages = data.stages;
+  if ((stages.current & required) == required && stages.evaluation == evaluation && stages.time == t) return;
+  throw std::logic_error("stale multibody stages: wanted stages " + std::to_string(required) + " of evaluation " +
+                         std::to_string(evaluation) + " at t = " + std::to_string(t) + " s, Data holds stages " +
+                         std::to_string(stages.current) + " of evaluation " + std::to_string(stages.evaluation) +
+                         " at t = " + std::to_string(stages.time) + " s");
 }
 
 }  // namespace heavesim

@@ -5,9 +5,11 @@
 // All spatial quantities are in world coordinates about the world origin
 // ("absolute" spatial vectors, Featherstone 2008 sec. 2.8 / Pinocchio's WORLD
 // convention): composite and articulated inertias then add without transforms.
+#include <limits>
+
 #include <Eigen/Cholesky>
 
-#include "kernel/algorithms/regularized_symmetric_solver.hpp"
+#include "kernel/math/regularized_symmetric_solver.hpp"
 #include "kernel/model/model.hpp"
 
 namespace heavesim {
@@ -15,8 +17,27 @@ namespace heavesim {
 using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
 using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
+/// Which stages of a Data hold values of one evaluation (MuJoCo's computed-stage
+/// flags, Simbody's realization stages). Every algorithm that computes a stage sets its
+/// bit; the position stage starts a new evaluation: it clears the other bits and
+/// advances the counter. The system that evaluates at a time t records t.
+struct StageMarker {
+  enum Stage : unsigned { positions = 1u, velocities = 2u, accelerations = 4u, reactions = 8u };
+  unsigned current = 0;  // bits of the stages computed in this evaluation
+  long evaluation = 0;   // advanced by every position stage
+  double time = std::numeric_limits<double>::quiet_NaN();  // s, of this evaluation (NaN: not recorded)
+
+  void begin_evaluation() {
+    current = positions;
+    ++evaluation;
+    time = std::numeric_limits<double>::quiet_NaN();
+  }
+};
+
 struct Data {
   explicit Data(const Model& model);
+
+  StageMarker stages;  // what below is current, and for which evaluation
 
   // --- position stage (update_positions) ---
   AlignedVector<Transform> X_world_link;    // link frame in the world
@@ -69,5 +90,11 @@ struct Data {
   std::vector<SmallMatrix> aba_D_inverse;         // per link, nv_i x nv_i
   VectorX aba_u;                                  // nv: u_i = tau_i - S_i^T p^A_i
 };
+
+/// Throws std::logic_error (naming what is stale) unless every stage in `required` (bits
+/// of StageMarker::Stage) is current in `data` for evaluation number `evaluation` at
+/// time t [s]: a read of stages that a later evaluation overwrote, or that were never
+/// computed. A few integer and double comparisons: cheap enough to stay on.
+void require_stages(const Data& data, unsigned required, double t, long evaluation);
 
 }  // namespace heavesim

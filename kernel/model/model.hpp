@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "kernel/constraints/constraint.hpp"
+#include "kernel/model/constraint.hpp"
 #include "kernel/joints/joint.hpp"
 #include "kernel/spatial/inertia.hpp"
 

@@ -90,13 +90,13 @@ Matrix3 canonical_axes(const Definition& joint, ModelError::ItemKind item) {
 void ModelBuilder::add_constraints(Model& model) const {
   std::map<std::string, int> names;
   // A new constraint of this type under a name no joint or constraint uses yet.
-  auto start = [&](const std::string& name, Constraint::Type type) {
+  auto start = [&](const std::string& name, ConstraintKind kind) {
     if (model.joint_index(name) > 0 || !names.emplace(name, 0).second)
       throw constraint_error(name, "name", "'" + name + "' a second time (joints and constraints share names)",
                              "a unique name");
     Constraint constraint;
     constraint.name = name;
-    constraint.type = type;
+    constraint.kind = std::move(kind);
     return constraint;
   };
   auto link_of = [&](const std::string& constraint, const std::string& field, const std::string& body) {
@@ -112,8 +112,7 @@ void ModelBuilder::add_constraints(Model& model) const {
   };
 
   for (const LoopJointDefinition& def : loop_joints_) {
-    Constraint constraint = start(def.name, Constraint::Type::loop_joint);
-    constraint.joint_kind = def.kind;
+    Constraint constraint = start(def.name, LoopJointConstraint{def.kind});
     constraint.link_a = link_of(def.name, "parent", def.parent);
     constraint.link_b = link_of(def.name, "child", def.child);
     if (constraint.link_a == constraint.link_b)
@@ -130,7 +129,7 @@ void ModelBuilder::add_constraints(Model& model) const {
     add(std::move(constraint));
   }
   for (const DistanceConstraintDefinition& def : distances_) {
-    Constraint constraint = start(def.name, Constraint::Type::distance);
+    Constraint constraint = start(def.name, DistanceConstraint{def.distance});
     constraint.link_a = link_of(def.name, "body_a", def.body_a);
     constraint.link_b = link_of(def.name, "body_b", def.body_b);
     if (constraint.link_a == constraint.link_b)
@@ -140,15 +139,14 @@ void ModelBuilder::add_constraints(Model& model) const {
                              "a positive distance in m (use a spherical loop joint for coincident points)");
     constraint.X_linkA_frame = model.links[constraint.link_a].X_link_body * Transform::from_translation(def.point_a);
     constraint.X_linkB_frame = model.links[constraint.link_b].X_link_body * Transform::from_translation(def.point_b);
-    constraint.distance = def.distance;
     constraint.rows = {{ConstraintRowKind::distance, 0, 0, "distance"}};
     add(std::move(constraint));
   }
   for (const CouplerDefinition& def : couplers_) {
-    Constraint constraint = start(def.name, Constraint::Type::coupler);
+    Constraint constraint = start(def.name, CouplerConstraint{});
+    auto& coupler = std::get<CouplerConstraint>(constraint.kind);
     for (const auto& [field, joint_name, joint_index] :
-         {std::tuple{"joint_a", def.joint_a, &constraint.joint_a},
-          std::tuple{"joint_b", def.joint_b, &constraint.joint_b}}) {
+         {std::tuple{"joint_a", def.joint_a, &coupler.joint_a}, std::tuple{"joint_b", def.joint_b, &coupler.joint_b}}) {
       const int index = model.joint_index(joint_name);
       if (index < 0)
         throw constraint_error(def.name, field, "'" + joint_name + "', which is not a joint", "the name of a joint");
@@ -158,17 +156,17 @@ void ModelBuilder::add_constraints(Model& model) const {
                                "a revolute or prismatic joint");
       *joint_index = index;
     }
-    if (constraint.joint_a == constraint.joint_b)
+    if (coupler.joint_a == coupler.joint_b)
       throw constraint_error(def.name, "joint_b", "joint '" + def.joint_a + "' on both ends", "two different joints");
     if (!std::isfinite(def.ratio) || !std::isfinite(def.offset))
       throw constraint_error(def.name, "ratio", "a non-finite ratio or offset", "finite numbers");
-    constraint.ratio = def.ratio;
-    constraint.offset = def.offset;
+    coupler.ratio = def.ratio;
+    coupler.offset = def.offset;
     constraint.rows = {{ConstraintRowKind::coupler, 0, 0, "coupled coordinates"}};
     add(std::move(constraint));
   }
   for (const DriverDefinition& def : drivers_) {
-    Constraint constraint = start(def.name, Constraint::Type::driver);
+    Constraint constraint = start(def.name, DriverConstraint{});
     const int index = model.joint_index(def.joint);
     if (index < 0)
       throw constraint_error(def.name, "joint", "'" + def.joint + "', which is not a joint", "the name of a joint");
@@ -181,13 +179,12 @@ void ModelBuilder::add_constraints(Model& model) const {
                              "0 to " + std::to_string(joint.nv - 1) + " (the coordinates of joint '" + def.joint + "')");
     if (!def.motion) throw constraint_error(def.name, "motion", "no motion", "a function of time");
     for (const Constraint& other : model.constraints)
-      if (other.type == Constraint::Type::driver && other.joint_a == index && other.coordinate == def.coordinate)
+      if (const auto* driver = std::get_if<DriverConstraint>(&other.kind);
+          driver && driver->joint == index && driver->coordinate == def.coordinate)
         throw constraint_error(def.name, "joint", "coordinate " + std::to_string(def.coordinate) + " of joint '" +
                                                       def.joint + "', already driven by '" + other.name + "'",
                                "at most one driver per coordinate");
-    constraint.joint_a = index;
-    constraint.coordinate = def.coordinate;
-    constraint.motion = def.motion;
+    constraint.kind = DriverConstraint{index, def.coordinate, def.motion};
     constraint.rows = {{ConstraintRowKind::driver, 0, 0, "prescribed coordinate"}};
     add(std::move(constraint));
   }

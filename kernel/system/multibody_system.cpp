@@ -3,10 +3,10 @@
 #include <cmath>
 
 #include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/projection.hpp"
 
 namespace heavesim {
 
@@ -14,19 +14,26 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
     : model_(std::move(model)),
       settings_(settings),
       data_(*model_),
-      scratch_data_(*model_),
       forces_(*model_),
-      scratch_forces_(*model_),
       total_loads_(model_->num_links(), Force::Zero()),
       size_(model_->nq + model_->nv),
       q_(VectorX::Zero(model_->nq)),
       v_(VectorX::Zero(model_->nv)),
       tau_total_(VectorX::Zero(model_->nv)),
-      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {}
+      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {
+  bool joint_elements = false;
+  for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
+  applied_dependencies_ = {false, joint_elements, joint_elements, false};
+}
 
 void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
   state_offsets_.push_back(size_);
   size_ += element->state_size();
+  const ElementDependencies d = element->dependencies();
+  applied_dependencies_.time |= d.time;
+  applied_dependencies_.configuration |= d.configuration;
+  applied_dependencies_.velocity |= d.velocity;
+  applied_dependencies_.element_states |= d.element_states && element->state_size() > 0;
   elements_.push_back(std::move(element));
 }
 
@@ -38,20 +45,35 @@ VectorX MultibodySystem::initial_state(const VectorX& q0, const VectorX& v0) con
   return y;
 }
 
-void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
+void MultibodySystem::compute_kinematics(const VectorX& y) {
   const Model& model = *model_;
+  q_ = y.head(model.nq);
+  v_ = y.segment(model.nq, model.nv);
   update_positions(model, data_, q_);
   update_velocities(model, data_, q_, v_);
+}
+
+void MultibodySystem::compute_stages_and_forces(double t, const VectorX& y) {
+  const Model& model = *model_;
+  compute_kinematics(y);
+  data_.stages.time = t;
   forces_.clear();
   add_joint_element_forces(model, q_, v_, forces_.joint_force);
   for (std::size_t e = 0; e < elements_.size(); ++e)
     elements_[e]->apply(t, model, data_, y.segment(state_offsets_[e], elements_[e]->state_size()), forces_);
 }
 
+void MultibodySystem::applied_forces_at(double t, const Data& stages, const VectorX& q, const VectorX& v,
+                                        const VectorX& y, AppliedForces& forces) const {
+  const Model& model = *model_;
+  forces.clear();
+  add_joint_element_forces(model, q, v, forces.joint_force);
+  for (std::size_t e = 0; e < elements_.size(); ++e)
+    elements_[e]->apply(t, model, stages, y.segment(state_offsets_[e], elements_[e]->state_size()), forces);
+}
+
 void MultibodySystem::compute_accelerations(double t, const VectorX& y) {
   const Model& model = *model_;
-  q_ = y.head(model.nq);
-  v_ = y.segment(model.nq, model.nv);
   compute_stages_and_forces(t, y);
   if (model.has_constraints()) {
     constrained_forward_dynamics(model, data_, t, forces_.joint_force, forces_.external_force_world);
@@ -93,36 +115,12 @@ void MultibodySystem::element_state_derivatives(double t, const VectorX& y, cons
   }
 }
 
-void MultibodySystem::derivative(double t, const VectorX& y, VectorX& ydot) {
+void MultibodySystem::state_derivative(double t, const VectorX& y, VectorX& ydot) {
   const Model& model = *model_;
   compute_accelerations(t, y);
   configuration_derivative(model, q_, v_, ydot.head(model.nq));
   ydot.segment(model.nq, model.nv) = data_.qdd;
   element_state_derivatives(t, y, data_, ydot.tail(size_ - model.nq - model.nv));
-}
-
-void MultibodySystem::project(double t, VectorX& y) {
-  const Model& model = *model_;
-  q_ = y.head(model.nq);
-  normalize_configuration(model, q_);
-  if (model.has_constraints()) {
-    v_ = y.segment(model.nq, model.nv);
-    const ProjectionResult result = project_to_constraints(model, data_, t, q_, v_, settings_.projection_tolerance,
-                                                           settings_.projection_iterations);
-    if (!result.converged) {
-      int worst = 0;
-      data_.constraint_residual.cwiseAbs().maxCoeff(&worst);
-      throw NumericalError(t,
-                           "constraint projection did not converge: |Phi| = " +
-                               std::to_string(result.position_residual) + " after " +
-                               std::to_string(result.iterations) + " iterations, worst at " +
-                               describe_constraint_row(model, worst),
-                           "the step was too large for the loop to be restored: reduce solver.step or the "
-                           "tolerances, or check for a singular configuration");
-    }
-    y.segment(model.nq, model.nv) = v_;
-  }
-  y.head(model.nq) = q_;
 }
 
 void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reactions) {

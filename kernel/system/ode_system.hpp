@@ -1,25 +1,10 @@
 #pragma once
 // What an integrator sees: dy/dt = f(t, y), optionally with a projection onto the
 // manifold on which y must stay (unit quaternions, closed loops).
-#include <stdexcept>
-#include <string>
-
+#include "kernel/math/numerical_error.hpp"
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
-
-/// A numerical failure with a diagnosis: when, what, and what to try.
-class NumericalError : public std::runtime_error {
- public:
-  NumericalError(double time, const std::string& what, const std::string& suggestion)
-      : std::runtime_error(what), time_(time), suggestion_(suggestion) {}
-  double time() const { return time_; }
-  const std::string& suggestion() const { return suggestion_; }
-
- private:
-  double time_;
-  std::string suggestion_;
-};
 
 class OdeSystem {
  public:

@@ -86,7 +86,7 @@ void expect_matches_oracle(const std::string& integrator, bool exact_derivatives
   const Model& model = *scene.model;
   const int pivot = model.joint_index("pivot"), rail = model.joint_index("rail");
   const PendulumOracle oracle = pendulum_oracle(definition.solver.t_end, definition.output.interval);
-  auto integrator_object = make_integrator(definition.solver.integrator);
+  auto integrator_object = make_integrator(definition.solver.integrator, *scene.system);
   std::size_t sample = 0;
   double angle_error = 0.0, rate_error = 0.0, force_error = 0.0, cart_error = 0.0;
   run_simulation(scene, definition.solver, definition.output.interval, *integrator_object,

@@ -9,6 +9,7 @@
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/system/ggl_dae_form.hpp"
 #include "tests/test_support.hpp"
 
 namespace heavesim {
@@ -40,7 +41,7 @@ TEST(Loops, OverconstrainedCrownBlockReportsRedundancyAndCarriesTheWeight) {
   for (const IntegratorSettings& settings : {definition.solver.integrator, hht}) {
     SCOPED_TRACE(integration_method_name(settings.method));
     scene.initial_state = kicked_state;
-    auto integrator = make_integrator(settings);
+    auto integrator = make_integrator(settings, *scene.system);
     int samples = 0;
     run_simulation(scene, definition.solver, 0.05, *integrator, [&](double t, const VectorX& y) {
       scene.system->evaluate(t, y, true);
@@ -64,7 +65,7 @@ TEST(Loops, DaeNewtonMatrixMatchesFiniteDifferencesOfTheResidual) {
   // The slider-crank has a loop joint with redundant rows, a spring-damper and a push.
   const CaseDefinition definition = load_case(testing::source_path("cases/validation/slider_crank.yaml"));
   Scene scene = build_scene(definition);
-  MultibodySystem& system = *scene.system;
+  GglDaeForm system(*scene.system);
   VectorX y, yp;
   system.dae_initial_values(0.0, scene.initial_state, y, yp);
   const int n = static_cast<int>(y.size());

@@ -88,7 +88,7 @@ struct Record {
 Record run_case(const std::string& file, const std::vector<std::string>& overrides = {}) {
   const CaseDefinition definition = load_case(testing::source_path(file), overrides);
   Scene scene = build_scene(definition);
-  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
   Record record;
   run_simulation(scene, definition.solver, definition.output.interval, *integrator, [&](double t, const VectorX& y) {
     const Eigen::AngleAxisd rotation(Eigen::Quaterniond(y[3], y[4], y[5], y[6]));

@@ -6,14 +6,16 @@
 
 namespace heavesim::testing {
 
-inline std::unique_ptr<Integrator> start_integrator(OdeSystem& system, const VectorX& y0, IntegrationMethod method,
+/// System: a MultibodySystem or a plain OdeSystem (make_integrator picks the form).
+template <class System>
+std::unique_ptr<Integrator> start_integrator(System& system, const VectorX& y0, IntegrationMethod method,
                                                     double relative_tolerance, double absolute_tolerance) {
   IntegratorSettings settings;
   settings.method = method;
   settings.relative_tolerance = relative_tolerance;
   settings.absolute_tolerance = absolute_tolerance;
-  std::unique_ptr<Integrator> integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, y0);
+  std::unique_ptr<Integrator> integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, y0);
   return integrator;
 }
 

@@ -8,7 +8,9 @@
 #include <numbers>
 
 #include "control/pneumatic/pneumatic_compensator.hpp"
+#include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/kinematics.hpp"
+#include "kernel/system/multibody_system.hpp"
 #include "tests/control/integration.hpp"
 #include "validation/checks/prescribed_motion.hpp"
 
@@ -69,6 +71,36 @@ TEST(Pneumatic, StiffnessMatchesDerivativeOfForceAndTheDefaultRig) {
   placed.at(-3.81, 0.0);
   const double swing = compensator.evaluate(0.0, *placed.model, placed.data, VectorX(), nullptr).gas_pressure / 15e6 - 1.0;
   EXPECT_NEAR(swing, 0.016, 0.001);
+}
+
+TEST(Pneumatic, GasEnergyClosesTheEnergyBalanceOfAnUndampedRun) {
+  // A 290 t load on the gas spring with no piping loss, friction or stops and one
+  // exponent (no heat exchange) is conservative: kinetic + gravity potential + the
+  // compensator's stored energy stays constant to the integrator's tolerance.
+  auto model = validation::vertical_slider(290e3);
+  MultibodySystem system(model);
+  PneumaticParameters p;
+  p.gas_pressure = 290e3 * 9.81 / p.piston_area + p.atmospheric_pressure;  // balanced at mid-stroke
+  system.add_force_element(std::make_unique<PneumaticCompensator>("passive", StrokeAxis::on_joint(*model, 1, 0.0), p));
+  const ForceElement& compensator = *system.force_elements().back();
+  auto integrator = testing::start_integrator(system, system.initial_state(VectorX::Zero(1), VectorX::Constant(1, 0.5)),
+                                              IntegrationMethod::dopri5, 1e-12, 1e-14);
+  double mechanical_first = 0.0, total_first = 0.0, mechanical_swing = 0.0, total_drift = 0.0, kinetic_max = 0.0;
+  for (int k = 0; k <= 400; ++k) {  // 40 s, more than one period (33 s)
+    if (k > 0) integrator->advance_to(0.1 * k);
+    const VectorX& y = integrator->state();
+    system.evaluate(0.1 * k, y, false);
+    const double kinetic = kinetic_energy(*model, system.data());
+    const double mechanical = kinetic + gravity_potential_energy(*model, system.data());
+    const double total = mechanical + compensator.potential_energy(*model, system.data(), y.tail(0));
+    if (k == 0) mechanical_first = mechanical, total_first = total;
+    kinetic_max = std::max(kinetic_max, kinetic);
+    mechanical_swing = std::max(mechanical_swing, std::abs(mechanical - mechanical_first));
+    total_drift = std::max(total_drift, std::abs(total - total_first));
+  }
+  EXPECT_NEAR(kinetic_max, 0.5 * 290e3 * 0.25, 1e-9 * kinetic_max);
+  EXPECT_LT(total_drift, 1e-8 * kinetic_max);
+  EXPECT_GT(mechanical_swing, 0.5 * kinetic_max);  // the gas term is what closes the balance
 }
 
 TEST(Pneumatic, PipingFrictionAndEndStops) {

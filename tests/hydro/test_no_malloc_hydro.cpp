@@ -66,12 +66,12 @@ TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
   VectorX q = model->neutral_configuration(), v = VectorX::Constant(model->nv, 0.1);
   q[2] = -0.5;
   VectorX y = system.initial_state(q, v), ydot(system.size());
-  system.derivative(3.0, y, ydot);  // first use may size workspaces
+  system.state_derivative(3.0, y, ydot);  // first use may size workspaces
   std::array<double, 2> values;
   Eigen::internal::set_is_malloc_allowed(false);
-  EXPECT_NO_THROW(system.derivative(5.0, y, ydot));
+  EXPECT_NO_THROW(system.state_derivative(5.0, y, ydot));
   // Equal steps: the wave excitation keeps the step and then rotates its phasors.
-  for (double t : {5.5, 6.0, 6.5, 7.0}) EXPECT_NO_THROW(system.derivative(t, y, ydot));
+  for (double t : {5.5, 6.0, 6.5, 7.0}) EXPECT_NO_THROW(system.state_derivative(t, y, ydot));
   EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), values));
   Eigen::internal::set_is_malloc_allowed(true);
 }
@@ -102,11 +102,11 @@ TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
   VectorX q = model->neutral_configuration(), v = VectorX::Constant(model->nv, 0.1);
   q[2] = -0.5;
   VectorX y = system.initial_state(q, v), ydot(system.size());
-  system.derivative(3.0, y, ydot);
+  system.state_derivative(3.0, y, ydot);
   std::array<double, 6> restoring_values;
   std::array<double, 9> wave_values;
   Eigen::internal::set_is_malloc_allowed(false);
-  EXPECT_NO_THROW(system.derivative(5.0, y, ydot));
+  EXPECT_NO_THROW(system.state_derivative(5.0, y, ydot));
   EXPECT_NO_THROW(restoring_element.outputs(5.0, *model, system.data(), VectorX(), restoring_values));
   EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), wave_values));
   Eigen::internal::set_is_malloc_allowed(true);

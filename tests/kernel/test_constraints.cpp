@@ -6,8 +6,8 @@
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/algorithms/projection.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "validation/checks/random_models.hpp"
 

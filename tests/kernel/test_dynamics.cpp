@@ -76,8 +76,8 @@ TEST(Dynamics, SpringMassOscillatorFollowsTheClosedForm) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::dopri5;
   settings.relative_tolerance = settings.absolute_tolerance = 1e-12;
-  auto integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, system.initial_state(VectorX::Constant(1, amplitude), VectorX::Zero(1)));
+  auto integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, system.initial_state(VectorX::Constant(1, amplitude), VectorX::Zero(1)));
   double max_error = 0.0;
   for (int k = 1; k <= 100; ++k) {
     const double t = 0.1 * k;
@@ -133,7 +133,7 @@ TEST(Dynamics, NonFiniteAccelerationStopsWithADiagnosisNamingTheJoint) {
   MultibodySystem system(model);
   VectorX y = system.initial_state(VectorX::Constant(1, 1e300), VectorX::Zero(1)), ydot(2);
   try {
-    system.derivative(0.0, y, ydot);
+    system.state_derivative(0.0, y, ydot);
     FAIL() << "expected a NumericalError";
   } catch (const NumericalError& error) {
     EXPECT_NE(std::string(error.what()).find("joint 'slide'"), std::string::npos) << error.what();

@@ -29,22 +29,24 @@ std::shared_ptr<const Model> oscillator(double stiffness) {
   return std::make_shared<const Model>(builder.build());
 }
 
-std::unique_ptr<Integrator> hht(double step, double alpha = 0.0) {
+std::unique_ptr<Integrator> hht(double step, double alpha, MultibodySystem& system) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::hht;
   settings.step = step;
   settings.hht_alpha = alpha;
   settings.relative_tolerance = settings.absolute_tolerance = 1e-12;
-  return make_integrator(settings);
+  return make_integrator(settings, system);
 }
+
+std::unique_ptr<Integrator> hht(double step, MultibodySystem& system) { return hht(step, 0.0, system); }
 
 TEST(Hht, TrapezoidalRuleIsTheExactRotationByTwoArctan) {
   // Newmark's average-acceleration rule on q'' = -w^2 q is the Cayley map: from q = 1,
   // v = 0 it gives exactly q_n = cos(n theta), v_n = -w sin(n theta), theta = 2 atan(w h / 2).
   const double omega = 3.0, h = 0.05;
   MultibodySystem system(oscillator(omega * omega));
-  auto integrator = hht(h);
-  integrator->initialize(system, 0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
+  auto integrator = hht(h, system);
+  integrator->initialize(0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
   const double theta = 2.0 * std::atan(omega * h / 2.0);
   for (int n = 1; n <= 200; ++n) {
     integrator->advance_to(n * h);
@@ -64,8 +66,8 @@ TEST(Hht, MatchesHilbersRecurrenceForAnOscillator) {
     for (const double omega_h : {0.3, 30.0}) {
       const double h = 0.01, omega = omega_h / h, gamma = 0.5 - alpha, beta = 0.25 * (1 - alpha) * (1 - alpha);
       MultibodySystem system(oscillator(omega * omega));
-      auto integrator = hht(h, alpha);
-      integrator->initialize(system, 0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
+      auto integrator = hht(h, alpha, system);
+      integrator->initialize(0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
       double q = 1.0, v = 0.0, a = -omega * omega;
       for (int n = 1; n <= 100; ++n) {
         const double k = omega * omega;
@@ -114,8 +116,8 @@ double lagged_error(IntegrationMethod method, double step) {
     settings.method = m;
     settings.step = h;
     settings.relative_tolerance = settings.absolute_tolerance = 1e-13;
-    auto integrator = make_integrator(settings);
-    integrator->initialize(system, 0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
+    auto integrator = make_integrator(settings, system);
+    integrator->initialize(0.0, system.initial_state(VectorX::Ones(1), VectorX::Zero(1)));
     integrator->advance_to(5.0);
     return VectorX(integrator->state());
   };
@@ -161,8 +163,8 @@ TEST(Hht, UnreachableConstraintStopsWithADiagnosis) {
   q << 1.0, M_PI / 6.0;
   v << 1.0, 0.5 / std::cos(M_PI / 6.0);
   const VectorX state0 = system.initial_state(q, v);
-  auto integrator = hht(1e-3);
-  integrator->initialize(system, 0.0, state0);
+  auto integrator = hht(1e-3, system);
+  integrator->initialize(0.0, state0);
   try {
     for (int k = 1; k <= 30; ++k) integrator->advance_to(0.1 * k);
     FAIL() << "ran through an unreachable configuration";

@@ -35,8 +35,8 @@ double rk4_error(double step) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::rk4;
   settings.step = step;
-  auto integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, Eigen::Vector2d(1.0, 0.0));
+  auto integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, Eigen::Vector2d(1.0, 0.0));
   integrator->advance_to(10.0);
   return std::abs(integrator->state()[0] - std::cos(10.0));
 }
@@ -51,8 +51,8 @@ TEST(Integrators, Rk4LandsExactlyOnOutputTimesOffTheStepGrid) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::rk4;
   settings.step = 0.003;
-  auto integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, Eigen::Vector2d(1.0, 0.0));
+  auto integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, Eigen::Vector2d(1.0, 0.0));
   integrator->advance_to(0.01);
   EXPECT_DOUBLE_EQ(integrator->time(), 0.01);
   EXPECT_NEAR(integrator->state()[0], std::cos(0.01), 1e-12);
@@ -65,8 +65,8 @@ TEST(Integrators, AdaptiveMethodsMeetTheirTolerance) {
     IntegratorSettings settings;
     settings.method = method;
     settings.relative_tolerance = settings.absolute_tolerance = 1e-10;
-    auto integrator = make_integrator(settings);
-    integrator->initialize(system, 0.0, Eigen::Vector2d(1.0, 0.0));
+    auto integrator = make_integrator(settings, system);
+    integrator->initialize(0.0, Eigen::Vector2d(1.0, 0.0));
     double max_error = 0.0;
     for (int k = 1; k <= 20; ++k) {
       integrator->advance_to(0.5 * k);
@@ -84,8 +84,8 @@ TEST(Integrators, IdaTakesLargeStepsOnAStiffProblem) {
   settings.method = IntegrationMethod::ida;
   settings.relative_tolerance = 1e-8;
   settings.absolute_tolerance = 1e-10;
-  auto integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, VectorX::Constant(1, 1.0));
+  auto integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, VectorX::Constant(1, 1.0));
   integrator->advance_to(10.0);
   EXPECT_NEAR(integrator->state()[0], std::cos(10.0), 1e-6);
   // An explicit method would need ~ 10 / (2.8e-6) steps for stability alone.
@@ -105,10 +105,10 @@ TEST(Integrators, FailuresArriveAsNumericalErrorsFromEveryMethod) {
     Exploding system;
     IntegratorSettings settings;
     settings.method = method;
-    auto integrator = make_integrator(settings);
+    auto integrator = make_integrator(settings, system);
     EXPECT_THROW(
         {
-          integrator->initialize(system, 0.0, VectorX::Zero(1));
+          integrator->initialize(0.0, VectorX::Zero(1));
           integrator->advance_to(1.0);
         },
         NumericalError)

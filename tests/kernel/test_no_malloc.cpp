@@ -15,7 +15,9 @@
 #include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
+#include "kernel/system/ggl_dae_form.hpp"
 #include "kernel/system/multibody_system.hpp"
+#include "kernel/system/ode_form.hpp"
 #include "validation/checks/random_models.hpp"
 
 namespace heavesim {
@@ -64,10 +66,11 @@ TEST(NoMalloc, SystemDerivativeDoesNotAllocate) {
     settings.method = method;
     MultibodySystem system(model, settings);
     const validation::RandomState state = validation::random_state(*model, random);
+    OdeForm ode(system);
     VectorX y = system.initial_state(state.q, state.v), ydot(system.size());
     ForbidAllocation forbid;
-    EXPECT_NO_THROW(system.derivative(0.0, y, ydot));
-    EXPECT_NO_THROW(system.project(0.0, y));
+    EXPECT_NO_THROW(ode.derivative(0.0, y, ydot));
+    EXPECT_NO_THROW(ode.project(0.0, y));
   }
 }
 
@@ -123,14 +126,14 @@ TEST(NoMalloc, GroundContactDoesNotAllocate) {
   VectorX ydot(four_bar.system.size());
   std::array<double, 2> values{};
   ForbidAllocation forbid;
-  EXPECT_NO_THROW(four_bar.system.derivative(0.0, y, ydot));
+  EXPECT_NO_THROW(four_bar.system.state_derivative(0.0, y, ydot));
   contact.outputs(0.0, four_bar.system.model(), four_bar.system.data(), y.tail(0), values);
   EXPECT_GT(values[0], 0.0);
 }
 
 TEST(NoMalloc, ClosedLoopDaeResidualDoesNotAllocate) {
   StrutFourBar four_bar;
-  MultibodySystem& system = four_bar.system;
+  GglDaeForm system(four_bar.system);
   VectorX dae_y, dae_yp;
   // Sizes the DAE's workspaces (and picks its independent rows): allowed to allocate.
   system.dae_initial_values(0.0, four_bar.y, dae_y, dae_yp);
@@ -144,11 +147,12 @@ TEST(NoMalloc, ClosedLoopExplicitPathDoesNotAllocate) {
   // The KKT solve (minimum-norm multipliers by the regularized Cholesky of J M^-1 J^T)
   // and the projection after each explicit step.
   StrutFourBar four_bar;
+  OdeForm ode(four_bar.system);
   VectorX ydot(four_bar.system.size());
-  four_bar.system.derivative(0.0, four_bar.y, ydot);  // first use sizes the workspaces
+  ode.derivative(0.0, four_bar.y, ydot);  // first use sizes the workspaces
   ForbidAllocation forbid;
-  EXPECT_NO_THROW(four_bar.system.derivative(0.0, four_bar.y, ydot));
-  EXPECT_NO_THROW(four_bar.system.project(0.0, four_bar.y));
+  EXPECT_NO_THROW(ode.derivative(0.0, four_bar.y, ydot));
+  EXPECT_NO_THROW(ode.project(0.0, four_bar.y));
 }
 
 TEST(NoMalloc, HhtStepsDoNotAllocate) {
@@ -156,8 +160,8 @@ TEST(NoMalloc, HhtStepsDoNotAllocate) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::hht;
   settings.step = 1e-3;
-  auto integrator = make_integrator(settings);
-  integrator->initialize(four_bar.system, 0.0, four_bar.y);
+  auto integrator = make_integrator(settings, four_bar.system);
+  integrator->initialize(0.0, four_bar.y);
   integrator->advance_to(0.002);  // first steps size every workspace
   ForbidAllocation forbid;
   EXPECT_NO_THROW(integrator->advance_to(0.05));
@@ -215,13 +219,14 @@ TEST(NoMalloc, CompensatorsDoNotAllocate) {
   VectorX y = system->initial_state(q, v), ydot(system->size());
   std::vector<std::vector<double>> values;
   for (const auto& element : system->force_elements()) values.emplace_back(element->channels().size());
+  GglDaeForm dae(*system);
   VectorX dae_y, dae_yp;
-  system->dae_initial_values(0.0, y, dae_y, dae_yp);
+  dae.dae_initial_values(0.0, y, dae_y, dae_yp);
   VectorX residual(dae_y.size());
-  system->residual(0.0, dae_y, dae_yp, residual);
+  dae.residual(0.0, dae_y, dae_yp, residual);
   ForbidAllocation forbid;
-  EXPECT_NO_THROW(system->derivative(0.0, y, ydot));  // apply() and state_derivative() of each element
-  EXPECT_NO_THROW(system->residual(0.0, dae_y, dae_yp, residual));
+  EXPECT_NO_THROW(system->state_derivative(0.0, y, ydot));  // apply() and state_derivative() of each element
+  EXPECT_NO_THROW(dae.residual(0.0, dae_y, dae_yp, residual));
   EXPECT_NO_THROW({
     for (std::size_t e = 0; e < values.size(); ++e) {
       const ForceElement& element = *system->force_elements()[e];

@@ -43,8 +43,8 @@ double prescribed_history_error(const IntegratorSettings& settings, bool gas_sta
   p.exponent_compression = p.exponent_expansion = n;
   if (gas_state) p.cooling = GasCooling{std::numeric_limits<double>::infinity(), p.initial_temperature};
   system.add_force_element(std::make_unique<PneumaticCompensator>("gas", StrokeAxis::on_joint(*model, 1, 0.0), p));
-  auto integrator = make_integrator(settings);
-  integrator->initialize(system, 0.0, system.initial_state());
+  auto integrator = make_integrator(settings, system);
+  integrator->initialize(0.0, system.initial_state());
   double error = 0.0, scale = 0.0;
   for (int k = 1; k <= 600; ++k) {
     const double t = 0.1 * k;

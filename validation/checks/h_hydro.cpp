@@ -66,11 +66,11 @@ void add_hydrostatics_and_damping(MultibodySystem& system, double damping_33) {
   system.add_force_element(std::make_unique<BodyDamping>("viscous", link, damping));
 }
 
-std::unique_ptr<Integrator> rk4(double step) {
+std::unique_ptr<Integrator> rk4(double step, MultibodySystem& system) {
   IntegratorSettings settings;
   settings.method = IntegrationMethod::rk4;
   settings.step = step;
-  return make_integrator(settings);
+  return make_integrator(settings, system);
 }
 
 }  // namespace
@@ -115,8 +115,8 @@ std::vector<ValidationRow> check_h3_heave_decay() {
     MultibodySystem system(model);
     add_hydrostatics_and_damping(system, 2 * zeta * wn * (semisub_mass + A33));
     const double wd = wn * std::sqrt(1 - zeta * zeta);
-    auto integrator = rk4(0.02);
-    integrator->initialize(system, 0.0, system.initial_state(VectorX::Constant(1, 1.0), VectorX::Zero(1)));
+    auto integrator = rk4(0.02, system);
+    integrator->initialize(0.0, system.initial_state(VectorX::Constant(1, 1.0), VectorX::Zero(1)));
     double amplitude_error = 0.0, previous = 1.0;
     std::vector<double> crossings;
     for (int k = 1; k <= 7500; ++k) {
@@ -151,8 +151,8 @@ std::vector<ValidationRow> check_h4_regular_wave_rao() {
     system.add_force_element(std::make_unique<RadiationMemory>("radiation", link, std::vector{memory}));
     system.add_force_element(std::make_unique<WaveExcitation>(
         "excitation", link, bem.excitation, regular_wave(2.0, period, 0.0, 0.0, infinite_depth, Ramp{RampKind::cosine, 100.0}, g)));
-    auto integrator = rk4(0.05);
-    integrator->initialize(system, 0.0, system.initial_state(VectorX::Zero(1), VectorX::Zero(1)));
+    auto integrator = rk4(0.05, system);
+    integrator->initialize(0.0, system.initial_state(VectorX::Zero(1), VectorX::Zero(1)));
     const double w = 2 * M_PI / period, t_end = 800.0, t_fit = t_end - 5 * period;
     std::vector<double> times, heave;
     for (int k = 1; k * 0.05 <= t_end + 1e-9; ++k) {

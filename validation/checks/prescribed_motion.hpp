@@ -9,7 +9,7 @@
 #include <memory>
 #include <vector>
 
-#include "kernel/system/force_element.hpp"
+#include "kernel/elements/force_element.hpp"
 #include "kernel/system/ode_system.hpp"
 
 namespace heavesim::validation {

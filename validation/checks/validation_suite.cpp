@@ -53,7 +53,7 @@ RunOutcome run_case(const std::string& relative_path, const std::vector<std::str
                     const std::function<void(double t, const MultibodySystem& system)>& sample) {
   const CaseDefinition definition = load_case(project_file(relative_path), overrides);
   Scene scene = build_scene(definition);
-  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator);
+  std::unique_ptr<Integrator> integrator = make_integrator(definition.solver.integrator, *scene.system);
   return run_simulation(scene, definition.solver, definition.output.interval, *integrator,
                         [&](double t, const VectorX& y) {
                           scene.system->evaluate(t, y, true);

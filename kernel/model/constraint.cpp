@@ -1,4 +1,4 @@
-#include "kernel/constraints/constraint.hpp"
+#include "kernel/model/constraint.hpp"
 
 #include "kernel/parameter_error.hpp"
 

@@ -1,4 +1,4 @@
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 namespace {
@@ -88,17 +88,17 @@ Transform constraint_frame_b(const Data& data, const Constraint& constraint) {
 void constraint_residual(const Model& model, const Data& data, const VectorX& q, double t,
                          Eigen::Ref<VectorX> residual) {
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.type == Constraint::Type::driver) {
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
       residual[constraint.first_row] =
-          q[model.joints[constraint.joint_a].q_index + constraint.coordinate] - constraint.motion(t).position;
+          q[model.joints[driver->joint].q_index + driver->coordinate] - driver->motion(t).position;
       continue;
     }
-    if (constraint.type == Constraint::Type::coupler) {
-      residual[constraint.first_row] = q[model.joints[constraint.joint_a].q_index] -
-                                       constraint.ratio * q[model.joints[constraint.joint_b].q_index] -
-                                       constraint.offset;
+    if (const auto* coupler = std::get_if<CouplerConstraint>(&constraint.kind)) {
+      residual[constraint.first_row] = q[model.joints[coupler->joint_a].q_index] -
+                                       coupler->ratio * q[model.joints[coupler->joint_b].q_index] - coupler->offset;
       continue;
     }
+    const auto* distance = std::get_if<DistanceConstraint>(&constraint.kind);  // distance rows have one
     const Transform A = constraint_frame_a(data, constraint), B = constraint_frame_b(data, constraint);
     const Vector3 r = B.translation() - A.translation();
     for (std::size_t k = 0; k < constraint.rows.size(); ++k) {
@@ -110,7 +110,7 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
           value = A.rotation().col(row.axis_a).dot(B.rotation().col(row.axis_b));
           break;
         case ConstraintRowKind::distance:
-          value = 0.5 * (r.squaredNorm() - constraint.distance * constraint.distance);
+          value = 0.5 * (r.squaredNorm() - distance->distance * distance->distance);
           break;
         case ConstraintRowKind::coupler:
         case ConstraintRowKind::driver: break;
@@ -122,13 +122,13 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
 void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<MatrixX> jacobian) {
   jacobian.setZero();
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.type == Constraint::Type::driver) {
-      jacobian(constraint.first_row, model.joints[constraint.joint_a].v_index + constraint.coordinate) = 1.0;
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
+      jacobian(constraint.first_row, model.joints[driver->joint].v_index + driver->coordinate) = 1.0;
       continue;
     }
-    if (constraint.type == Constraint::Type::coupler) {
-      jacobian(constraint.first_row, model.joints[constraint.joint_a].v_index) = 1.0;
-      jacobian(constraint.first_row, model.joints[constraint.joint_b].v_index) = -constraint.ratio;
+    if (const auto* coupler = std::get_if<CouplerConstraint>(&constraint.kind)) {
+      jacobian(constraint.first_row, model.joints[coupler->joint_a].v_index) = 1.0;
+      jacobian(constraint.first_row, model.joints[coupler->joint_b].v_index) = -coupler->ratio;
       continue;
     }
     const FrameState frames = frame_state(data, constraint);
@@ -150,16 +150,17 @@ void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<Matrix
 void constraint_velocity_target(const Model& model, double t, Eigen::Ref<VectorX> target) {
   target.setZero();
   for (const Constraint& constraint : model.constraints)
-    if (constraint.type == Constraint::Type::driver) target[constraint.first_row] = constraint.motion(t).velocity;
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind))
+      target[constraint.first_row] = driver->motion(t).velocity;
 }
 
 void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> bias) {
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.type == Constraint::Type::driver) {
-      bias[constraint.first_row] = constraint.motion(t).acceleration;
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
+      bias[constraint.first_row] = driver->motion(t).acceleration;
       continue;
     }
-    if (constraint.type == Constraint::Type::coupler) {
+    if (std::holds_alternative<CouplerConstraint>(constraint.kind)) {
       bias[constraint.first_row] = 0.0;
       continue;
     }
@@ -178,7 +179,7 @@ void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<
 }
 
 Force constraint_wrench(const Model&, const Data& data, const Constraint& constraint, const VectorX& lambda) {
-  if (constraint.type == Constraint::Type::coupler || constraint.type == Constraint::Type::driver) return Force::Zero();
+  if (!constraint.acts_on_frames()) return Force::Zero();
   const FrameState frames = frame_state(data, constraint);
   Force wrench = Force::Zero();
   for (std::size_t k = 0; k < constraint.rows.size(); ++k)
@@ -189,14 +190,14 @@ Force constraint_wrench(const Model&, const Data& data, const Constraint& constr
 void add_constraint_loads(const Model& model, const Data& data, const VectorX& lambda,
                           AlignedVector<Force>& external_forces_world, VectorX& tau) {
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.type == Constraint::Type::driver) {
-      tau[model.joints[constraint.joint_a].v_index + constraint.coordinate] += lambda[constraint.first_row];
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
+      tau[model.joints[driver->joint].v_index + driver->coordinate] += lambda[constraint.first_row];
       continue;
     }
-    if (constraint.type == Constraint::Type::coupler) {
+    if (const auto* coupler = std::get_if<CouplerConstraint>(&constraint.kind)) {
       const double force = lambda[constraint.first_row];
-      tau[model.joints[constraint.joint_a].v_index] += force;
-      tau[model.joints[constraint.joint_b].v_index] -= constraint.ratio * force;
+      tau[model.joints[coupler->joint_a].v_index] += force;
+      tau[model.joints[coupler->joint_b].v_index] -= coupler->ratio * force;
       continue;
     }
     const Force wrench = constraint_wrench(model, data, constraint, lambda);

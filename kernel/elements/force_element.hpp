@@ -35,6 +35,17 @@ struct ElementChannel {
   std::string description;  // what it is, its sign convention and frame
 };
 
+/// What an element's loads (apply) and state rates (state_derivative) can depend on.
+/// The implicit forms difference the applied forces column by column in q, v and z
+/// (DynamicsDifferentiator); a column group that no element (and no joint element)
+/// depends on is exactly zero and is skipped. Conservative by default: everything.
+struct ElementDependencies {
+  bool time = true;            // t [s] (waves, prescribed loads)
+  bool configuration = true;   // q, through the position stage (where a point or body is)
+  bool velocity = true;        // v, through the velocity stage (world velocities depend on q too)
+  bool element_states = true;  // its own z
+};
+
 /// A force element may own internal states z with dz/dt = g(t, q, v, z)
 /// (radiation memory, gas temperature, chamber pressures, controller integrators).
 /// apply() and state_derivative() see the position and velocity stages in Data.
@@ -52,6 +63,17 @@ class ForceElement {
 
   virtual void state_derivative(double /*t*/, const Model& /*model*/, const Data& /*data*/,
                                 Eigen::Ref<const VectorX> /*z*/, Eigen::Ref<VectorX> /*zdot*/) const {}
+
+  /// What apply() and state_derivative() read (see ElementDependencies); the default,
+  /// everything, is always correct.
+  virtual ElementDependencies dependencies() const { return {}; }
+
+  /// The element's stored potential energy [J] at the stages in Data and state z, for
+  /// the energy channels: V with the conservative part of the load = -dV/d(position)
+  /// (springs, gas, restoring). 0 for elements that store none (dampers, excitation).
+  virtual double potential_energy(const Model& /*model*/, const Data& /*data*/, Eigen::Ref<const VectorX> /*z*/) const {
+    return 0.0;
+  }
 
   /// The element's output channels, fixed once the element is built (none by default).
   virtual const std::vector<ElementChannel>& channels() const {

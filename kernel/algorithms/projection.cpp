@@ -1,4 +1,4 @@
-#include "kernel/constraints/projection.hpp"
+#include "kernel/algorithms/projection.hpp"
 
 #include <Eigen/QR>
 
@@ -6,7 +6,7 @@
 #include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
-#include "kernel/constraints/constraint_equations.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 
 namespace heavesim {
 namespace {
@@ -82,11 +82,7 @@ const Constraint* constraint_of_row(const Model& model, int row) {
 std::string describe_constraint_row(const Model& model, int row) {
   const Constraint* constraint = constraint_of_row(model, row);
   if (!constraint) return "row " + std::to_string(row);
-  const char* type = constraint->type == Constraint::Type::loop_joint ? "loop joint"
-                     : constraint->type == Constraint::Type::distance ? "distance constraint"
-                     : constraint->type == Constraint::Type::coupler  ? "coupler"
-                                                                      : "driver";
-  return std::string(type) + " '" + constraint->name + "': " + constraint->rows[row - constraint->first_row].description;
+  return std::string(constraint->kind_name()) + " '" + constraint->name + "': " + constraint->rows[row - constraint->first_row].description;
 }
 
 }  // namespace heavesim

@@ -15,6 +15,7 @@
 // reaction wrench without finite differences (constraint_equations.hpp).
 #include <functional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "kernel/joints/joint.hpp"
@@ -40,21 +41,46 @@ struct DriverMotion {
 };
 using DriverFunction = std::function<DriverMotion(double t)>;
 
+/// The kinds of constraint, like the joint types (joint.hpp): each holds what only it
+/// needs. Loop joints and distances act between frames A and B (the frame fields of
+/// Constraint); couplers and drivers act on joint coordinates.
+struct LoopJointConstraint {
+  JointKind joint_kind = JointKind::fixed;  // the joint it stands for
+};
+struct DistanceConstraint {
+  double distance = 0.0;  // m, between the frame origins
+};
+struct CouplerConstraint {
+  int joint_a = 0, joint_b = 0;      // the two 1-DoF joints (model joint indices)
+  double ratio = 1.0, offset = 0.0;  // q_a = ratio q_b + offset
+};
+struct DriverConstraint {
+  int joint = 0;          // model joint index
+  int coordinate = 0;     // which coordinate of the joint it prescribes
+  DriverFunction motion;  // q_joint,coordinate = motion(t).position
+};
+using ConstraintKind = std::variant<LoopJointConstraint, DistanceConstraint, CouplerConstraint, DriverConstraint>;
+
 struct Constraint {
-  enum class Type { loop_joint, distance, coupler, driver };
   std::string name;
-  Type type = Type::loop_joint;
-  JointKind joint_kind = JointKind::fixed;  // loop joints: the joint they stand for
-  int link_a = 0, link_b = 0;               // frame A on link_a (the joint's parent side), B on link_b
-  Transform X_linkA_frame, X_linkB_frame;   // canonical frames (axis on z) in their links
+  ConstraintKind kind;
+  // Frame constraints (loop joints, distances): frame A on link_a (the joint's parent
+  // side), B on link_b.
+  int link_a = 0, link_b = 0;
+  Transform X_linkA_frame, X_linkB_frame;       // canonical frames (axis on z) in their links
   Matrix3 R_joint_frame = Matrix3::Identity();  // frame B's axes in the user's joint frame
-  double distance = 0.0;                    // m, distance constraints
-  int joint_a = 0, joint_b = 0;             // coupler: the two 1-DoF joints (model joint indices)
-  double ratio = 1.0, offset = 0.0;         // coupler: q_a = ratio q_b + offset
-  int coordinate = 0;                       // driver: which coordinate of joint_a it prescribes
-  DriverFunction motion;                    // driver: q_a,coordinate = motion(t).position
   int first_row = 0;
   std::vector<ConstraintRow> rows;
+
+  /// Whether it acts between frames A and B (loop joint, distance) rather than on coordinates.
+  bool acts_on_frames() const {
+    return std::holds_alternative<LoopJointConstraint>(kind) || std::holds_alternative<DistanceConstraint>(kind);
+  }
+  /// "loop joint", "distance constraint", "coupler" or "driver".
+  const char* kind_name() const {
+    static constexpr const char* names[] = {"loop joint", "distance constraint", "coupler", "driver"};
+    return names[kind.index()];
+  }
 };
 
 /// The rows that stand for a loop joint of this kind on canonical frames (axis on z;

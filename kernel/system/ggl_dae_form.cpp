@@ -1,0 +1,191 @@
+// The stabilized index-2 form of a multibody model for IDA (Gear, Gupta & Leimkuhler
+// 1985; the form of SUNDIALS' idaSlCrank example), y = [q; v; z; lambda; mu]:
+//   F_q  = q' - N(q) (v - J^T mu)         mu keeps q on Phi = 0 (mu = 0 at the solution)
+//   F_v  = ID(q, v, v') - tau - J^T lambda  one RNEA pass: no forward dynamics
+//   F_z  = z' - g(t, q, v, z)
+//   F_lambda = J v - nu(t)                  velocity-level constraints (nu = -dPhi/dt: drivers)
+//   F_mu = Phi(q, t)                        position-level constraints
+// lambda and mu are algebraic (excluded from IDA's error test).
+//
+// Redundant constraint rows (a planar loop closed by a 3-D revolute joint, two
+// parallel rods on one block) would make the Newton matrix singular: the DAE keeps
+// only the independent rows found by the rank-revealing QR at the initial state
+// (analyse_constraint_rank), as multibody codes do; the others then hold by
+// themselves. Reported multipliers still come from evaluate(), the minimum-norm
+// solution over all rows.
+//
+// The Newton matrix dF/dy + cj dF/dy' is assembled from the dynamics' partial
+// derivatives (dynamics_differentiator.hpp: analytic M, dID/dq, dID/dv; differences for
+// the elements and the q-dependence of J^T lambda, J^T mu and J v), J, Phi_q = J N+
+// and N. Derivatives in q are taken along tangent directions and mapped to the raw
+// coordinates with N+ (unit quaternions: 4 N^T).
+#include "kernel/system/ggl_dae_form.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/QR>
+
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/algorithms/inverse_dynamics.hpp"
+#include "kernel/algorithms/projection.hpp"
+
+namespace heavesim {
+
+GglDaeForm::GglDaeForm(MultibodySystem& system) : system_(system), differentiator_(system) {}
+
+void GglDaeForm::differential_mask(VectorX& mask) const {
+  mask.setZero(dae_size());
+  mask.head(system_.size()).setOnes();
+}
+
+void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) {
+  const Model& model = system_.model();
+  Data& data = system_.mutable_data();
+  const int size = system_.size();
+  ode_rate_.resize(size);
+  system_.state_derivative(t, state, ode_rate_);  // qdd and, with loops, lambda from the KKT solve
+  rows_.clear();
+  if (model.has_constraints()) {
+    // The ODE evaluation left the position stage at q and lambda of all rows.
+    const ConstraintRank rank = analyse_constraint_rank(model, data);
+    std::vector<bool> redundant(model.num_constraint_rows, false);
+    for (int row : rank.redundant_rows) redundant[row] = true;
+    for (int row = 0; row < model.num_constraint_rows; ++row)
+      if (!redundant[row]) rows_.push_back(row);
+  }
+  const int kept = kept_rows();
+  y.setZero(dae_size());
+  yp.setZero(dae_size());
+  y.head(size) = state;
+  yp.head(size) = ode_rate_;
+  rows_jacobian_.resize(kept, model.nv);
+  constraint_.resize(kept);
+  if (kept == 0) return;
+  // Multipliers of the kept rows giving the same constraint force J^T lambda (mu = 0).
+  const MatrixX J_kept = data.constraint_jacobian(rows_, Eigen::all);
+  const VectorX generalized_force = data.constraint_jacobian.transpose() * data.constraint_multipliers;
+  y.segment(size, kept) = J_kept.transpose().colPivHouseholderQr().solve(generalized_force);
+}
+
+void GglDaeForm::residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) {
+  const Model& model = system_.model();
+  Data& data = system_.mutable_data();
+  const int nq = model.nq, nv = model.nv, size = system_.size(), nz = size - nq - nv, m = kept_rows();
+  vdot_ = yp.segment(nq, nv);
+  system_.compute_stages_and_forces(t, y);
+  const VectorX& q = system_.configuration();
+  const VectorX& v = system_.velocity();
+  const AppliedForces& forces = system_.applied_forces();
+  r.segment(nq, nv) = inverse_dynamics(model, data, vdot_, forces.external_force_world);
+  r.segment(nq, nv) -= forces.joint_force;
+  w_ = v;
+  if (m > 0) {
+    constraint_jacobian(model, data, data.constraint_jacobian);
+    constraint_residual(model, data, q, t, data.constraint_residual);
+    constraint_velocity_target(model, t, data.constraint_velocity_target);
+    rows_jacobian_ = data.constraint_jacobian(rows_, Eigen::all);
+    constraint_ = data.constraint_residual(rows_);
+    r.segment(nq, nv).noalias() -= rows_jacobian_.transpose() * y.segment(size, m);
+    w_.noalias() -= rows_jacobian_.transpose() * y.segment(size + m, m);
+    r.segment(size, m).noalias() = rows_jacobian_ * v;
+    r.segment(size, m) -= data.constraint_velocity_target(rows_);
+    r.segment(size + m, m) = constraint_;
+  }
+  qdot_.resize(nq);
+  configuration_derivative(model, q, w_, qdot_);
+  r.head(nq) = yp.head(nq) - qdot_;
+  if (nz > 0) {
+    zdot_.resize(nz);
+    system_.element_state_derivatives(t, y, data, zdot_);
+    r.segment(nq + nv, nz) = yp.segment(nq + nv, nz) - zdot_;
+  }
+}
+
+void GglDaeForm::configuration_maps() {
+  const Model& model = system_.model();
+  const VectorX& q = system_.configuration();
+  N_.setZero(model.nq, model.nv);
+  N_plus_.setZero(model.nv, model.nq);
+  VectorX unit = VectorX::Zero(model.nv), qdot(model.nq), qdot_zero(model.nq);
+  configuration_derivative(model, q, unit, qdot_zero);
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    if (joint.nv == 0) continue;
+    if (joint_has_scalar_coordinates(joint.type)) {
+      N_.block(joint.q_index, joint.v_index, joint.nq, joint.nv).setIdentity();
+      N_plus_.block(joint.v_index, joint.q_index, joint.nv, joint.nq).setIdentity();
+      continue;
+    }
+    // N is linear in v: column k = qdot(q, e_k) - qdot(q, 0); N+ = (N^T N)^-1 N^T.
+    for (int k = 0; k < joint.nv; ++k) {
+      unit[joint.v_index + k] = 1.0;
+      configuration_derivative(model, q, unit, qdot);
+      unit[joint.v_index + k] = 0.0;
+      N_.block(joint.q_index, joint.v_index + k, joint.nq, 1) = (qdot - qdot_zero).segment(joint.q_index, joint.nq);
+    }
+    const MatrixX N = N_.block(joint.q_index, joint.v_index, joint.nq, joint.nv);
+    N_plus_.block(joint.v_index, joint.q_index, joint.nv, joint.nq) = (N.transpose() * N).ldlt().solve(N.transpose());
+  }
+}
+
+bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) {
+  const Model& model = system_.model();
+  const int nq = model.nq, nv = model.nv, size = system_.size(), nz = size - nq - nv, m = kept_rows();
+  const int iv = nq, iz = nq + nv, il = size, im = size + m;
+  J.setZero(dae_size(), dae_size());
+
+  ggl_derivatives_.mu = y.segment(im, m);
+  lambda_ = y.segment(il, m);
+  vdot_ = yp.segment(nq, nv);
+  differentiator_.differentiate(t, y, vdot_, rows_, lambda_, derivatives_, &ggl_derivatives_);
+  configuration_maps();
+  const DynamicsDerivatives& d = derivatives_;
+  const MatrixX& rows_jacobian = differentiator_.rows_jacobian();
+  const VectorX& q = system_.configuration();
+
+  // F_q = q' - N(q) w, w = v - J^T mu.
+  w_ = system_.velocity();
+  w_.noalias() -= rows_jacobian.transpose() * ggl_derivatives_.mu;
+  qdot_.resize(nq);
+  configuration_derivative(model, q, w_, qdot_);
+  J.block(0, 0, nq, nq).diagonal().setConstant(cj);
+  // d(N(q) w)/dq in raw coordinates: N is constant for plain coordinates, so only the
+  // quaternion-carrying joints (spherical, free) have columns here.
+  const double h_raw = 1e-7;
+  q_perturbed_ = q;
+  qdot_plus_.resize(nq);
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    if (joint.nq == 0 || joint_has_scalar_coordinates(joint.type)) continue;
+    for (int k = joint.q_index; k < joint.q_index + joint.nq; ++k) {
+      q_perturbed_[k] += h_raw;
+      configuration_derivative(model, q_perturbed_, w_, qdot_plus_);
+      q_perturbed_[k] = q[k];
+      J.block(0, k, nq, 1) -= (qdot_plus_ - qdot_) / h_raw;
+    }
+  }
+  J.block(0, 0, nq, nq).noalias() += N_ * ggl_derivatives_.jt_mu_q * N_plus_;
+  J.block(0, iv, nq, nv) = -N_;
+
+  // F_v = ID(q, v, v') - Q - J^T lambda;  F_z = z' - g.
+  J.block(iv, 0, nv, nq).noalias() = d.force_q * N_plus_;
+  J.block(iv, iv, nv, nv) = d.force_v + cj * d.mass;
+  if (nz > 0) {
+    J.block(iv, iz, nv, nz) = d.force_z;
+    J.block(iz, 0, nz, nq).noalias() = -d.rate_q * N_plus_;
+    J.block(iz, iv, nz, nv) = -d.rate_v;
+    J.block(iz, iz, nz, nz) = -d.rate_z;
+    J.block(iz, iz, nz, nz).diagonal().array() += cj;
+  }
+  if (m > 0) {
+    // F_lambda = J v - nu, F_mu = Phi.
+    J.block(0, im, nq, m).noalias() = N_ * rows_jacobian.transpose();
+    J.block(iv, il, nv, m) = -rows_jacobian.transpose();
+    J.block(il, 0, m, nq).noalias() = ggl_derivatives_.jv_q * N_plus_;
+    J.block(il, iv, m, nv) = rows_jacobian;
+    J.block(im, 0, m, nq).noalias() = rows_jacobian * N_plus_;
+  }
+  return true;
+}
+
+}  // namespace heavesim

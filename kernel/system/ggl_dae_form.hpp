@@ -1,0 +1,40 @@
+#pragma once
+// A MultibodySystem as a DaeSystem for IDA: the stabilized index-2 form of Gear, Gupta
+// & Leimkuhler (1985), y_dae = [q; v; z; lambda (m); mu (m)] (ggl_dae_form.cpp).
+#include <vector>
+
+#include "kernel/system/dae_system.hpp"
+#include "kernel/system/dynamics_differentiator.hpp"
+#include "kernel/system/multibody_system.hpp"
+
+namespace heavesim {
+
+class GglDaeForm final : public DaeSystem {
+ public:
+  explicit GglDaeForm(MultibodySystem& system);
+
+  int dae_size() const override { return system_.size() + 2 * kept_rows(); }
+  void differential_mask(VectorX& mask) const override;
+  void dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) override;
+  void state_from_dae(const VectorX& y, VectorX& state) const override { state = y.head(system_.size()); }
+  void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override;
+  bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
+
+ private:
+  /// Constraint rows in the DAE: the independent ones at the initial state.
+  int kept_rows() const { return static_cast<int>(rows_.size()); }
+  /// N(q) and N+(q) at the system's configuration.
+  void configuration_maps();
+
+  MultibodySystem& system_;
+  DynamicsDifferentiator differentiator_;
+  std::vector<int> rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
+  VectorX w_, qdot_, qdot_plus_, zdot_, vdot_, lambda_, ode_rate_, q_perturbed_;
+  MatrixX N_, N_plus_;
+  MatrixX rows_jacobian_;  // J of the kept rows at the last residual
+  VectorX constraint_;     // Phi of the kept rows
+  DynamicsDerivatives derivatives_;
+  GglDerivatives ggl_derivatives_;
+};
+
+}  // namespace heavesim

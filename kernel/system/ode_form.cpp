@@ -1,0 +1,38 @@
+#include "kernel/system/ode_form.hpp"
+
+#include "kernel/algorithms/configuration.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/algorithms/projection.hpp"
+
+namespace heavesim {
+
+OdeForm::OdeForm(MultibodySystem& system)
+    : system_(system), q_(VectorX::Zero(system.model().nq)), v_(VectorX::Zero(system.model().nv)) {}
+
+void OdeForm::project(double t, VectorX& y) {
+  const Model& model = system_.model();
+  Data& data = system_.mutable_data();
+  const SystemSettings& settings = system_.settings();
+  q_ = y.head(model.nq);
+  normalize_configuration(model, q_);
+  if (model.has_constraints()) {
+    v_ = y.segment(model.nq, model.nv);
+    const ProjectionResult result =
+        project_to_constraints(model, data, t, q_, v_, settings.projection_tolerance, settings.projection_iterations);
+    if (!result.converged) {
+      int worst = 0;
+      data.constraint_residual.cwiseAbs().maxCoeff(&worst);
+      throw NumericalError(t,
+                           "constraint projection did not converge: |Phi| = " +
+                               std::to_string(result.position_residual) + " after " +
+                               std::to_string(result.iterations) + " iterations, worst at " +
+                               describe_constraint_row(model, worst),
+                           "the step was too large for the loop to be restored: reduce solver.step or the "
+                           "tolerances, or check for a singular configuration");
+    }
+    y.segment(model.nq, model.nv) = v_;
+  }
+  y.head(model.nq) = q_;
+}
+
+}  // namespace heavesim
