@@ -4,22 +4,25 @@
 
 #include <fmt/format.h>
 
+#include "kernel/algorithms/generalized_force.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/parameter_error.hpp"
 
 namespace heavesim {
 
+namespace {
+
+/// Q (nv) of `forces` at the position stage held in `data` (the kernel's O(n) projection;
+/// set-up code, so its workspace is allocated here).
 VectorX generalized_force(const Model& model, const Data& data, const AppliedForces& forces) {
-  VectorX Q = forces.joint_force;
-  for (int i = 1; i < model.num_links(); ++i) {
-    const Joint& joint = model.joints[i];
-    Force subtree = Force::Zero();
-    for (int j = i; j < model.links[i].subtree_end; ++j) subtree += forces.external_force_world[j];
-    for (int c = 0; c < joint.nv; ++c) Q[joint.v_index + c] += dot(data.motion_subspace_world.col(joint.v_index + c), subtree);
-  }
+  AlignedVector<Force> subtree_forces(model.num_links(), Force::Zero());
+  VectorX Q(model.nv);
+  generalized_applied_force(model, data, forces.external_force_world, forces.joint_force, subtree_forces, Q);
   return Q;
 }
+
+}  // namespace
 
 VectorX unit_stroke_generalized_force(const StrokeAxis& axis, const Model& model, const Data& data) {
   AppliedForces unit_force(model);

@@ -8,11 +8,6 @@
 
 namespace heavesim {
 
-/// Generalized force Q (nv) of applied forces at the position stage held in `data`:
-/// Q = tau + sum over links i of S_i^T (the world-frame forces on link i's subtree).
-/// O(n^2) in the number of links; the one projection of this analysis.
-VectorX generalized_force(const Model& model, const Data& data, const AppliedForces& forces);
-
 /// Q (nv) of a unit force [1 N] along the stroke at the position stage held in `data`.
 VectorX unit_stroke_generalized_force(const StrokeAxis& axis, const Model& model, const Data& data);
 
