@@ -142,8 +142,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (item.has("stiffness")) {
       // Linear hydrostatics given directly (e.g. from the hull's A_wp, V and waterplane
       // inertias): the buoyancy's restoring only; gravity acts on the bodies' masses.
-      def.matrix = read_matrix6(item["stiffness"]);
-      check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
+      def.stiffness = read_matrix6(item["stiffness"]);
+      check_symmetric_positive(item["stiffness"], def.stiffness, "stiffness");
     } else {
       def.file_key = item.has("hst") ? "hst" : "mesh";
     }
@@ -210,26 +210,26 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
   } else if (type == "linear_damping") {
     item.expect_map({"name", "type", "body", "damping", "description"});
     def.type = HydroForceDefinition::Type::linear_damping;
-    def.matrix = read_matrix6(item["damping"]);
-    check_symmetric_positive(item["damping"], def.matrix, "damping");
+    def.damping = read_matrix6(item["damping"]);
+    check_symmetric_positive(item["damping"], def.damping, "damping");
   } else if (type == "quadratic_damping") {
     item.expect_map({"name", "type", "body", "coefficients", "description"});
     def.type = HydroForceDefinition::Type::quadratic_damping;
-    def.vector = read_vector6(item["coefficients"]);
-    if ((def.vector.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+    def.quadratic_coefficients = read_vector6(item["coefficients"]);
+    if ((def.quadratic_coefficients.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
     // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.
     item.expect_map({"name", "type", "body", "matrix", "description"});
     def.type = HydroForceDefinition::Type::added_mass;
-    def.matrix = read_matrix6(item["matrix"]);
-    check_symmetric_positive(item["matrix"], def.matrix, "mass");
+    def.added_mass = read_matrix6(item["matrix"]);
+    check_symmetric_positive(item["matrix"], def.added_mass, "mass");
   } else {
     item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
     def.type = HydroForceDefinition::Type::mooring;
-    def.matrix = read_matrix6(item["stiffness"]);
-    check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
-    if (auto pretension = item.optional("pretension")) def.vector = read_vector6(*pretension);
+    def.stiffness = read_matrix6(item["stiffness"]);
+    check_symmetric_positive(item["stiffness"], def.stiffness, "stiffness");
+    if (auto pretension = item.optional("pretension")) def.pretension = read_vector6(*pretension);
   }
   def.body = item["body"].text();
   if (!def.file_key.empty()) {
