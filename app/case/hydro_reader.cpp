@@ -85,18 +85,17 @@ void read_waves(const NodeReader& reader, CaseDefinition& definition) {
   WaveDefinition& waves = definition.waves;
   const std::string type = reader["type"].choice({"regular", "jonswap", "pierson_moskowitz", "none"});
   if (type == "none") {
-    reader.expect_map({"type"});
+    reader.expect_section("waves", "none");
     return;
   }
   if (type == "regular") {
-    reader.expect_map({"type", "amplitude", "period", "heading", "phase", "ramp"});
+    reader.expect_section("waves", "regular");
     waves.type = WaveDefinition::Type::regular;
     waves.amplitude = reader["amplitude"].non_negative_number();
     waves.period = reader["period"].positive_number();
     waves.phase = reader.number_or("phase", 0.0);
   } else {
-    reader.expect_map({"type", "hs", "tp", "gamma", "components", "seed", "discretization", "min_frequency",
-                       "max_frequency", "heading", "ramp"});
+    reader.expect_section("waves", "irregular");
     waves.type = type == "jonswap" ? WaveDefinition::Type::jonswap : WaveDefinition::Type::pierson_moskowitz;
     waves.significant_height = reader["hs"].positive_number();
     waves.peak_period = reader["tp"].positive_number();
@@ -132,9 +131,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
   HydroForceDefinition def;
   def.name = name;
   if (type == "hydrostatics") {
-    item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "hst_includes_gravity",
-                     "length_scale",
-                     "description"});
+    item.expect_section("hydrostatics");
     def.type = HydroForceDefinition::Type::hydrostatics;
     if (item.has("hst") + item.has("mesh") + item.has("stiffness") != 1)
       item.fail("exactly one of 'hst' (linear: a WAMIT .hst, BEMIO .h5 or Capytaine .nc file), 'stiffness' (linear, a "
@@ -159,8 +156,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       def.hst_includes_gravity = gravity->boolean();
     }
   } else if (type == "radiation") {
-    item.expect_map({"name", "type", "body", "file", "memory", "state_space_order", "kernel_duration", "kernel_step",
-                     "modes", "length_scale", "description"});
+    item.expect_section("radiation");
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
     hydro::RadiationMemorySettings& memory = def.memory;
@@ -179,7 +175,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       }
     }
   } else if (type == "wave_excitation") {
-    item.expect_map({"name", "type", "body", "file", "heave_estimate", "length_scale", "description"});
+    item.expect_section("wave_excitation");
     def.type = HydroForceDefinition::Type::wave_excitation;
     if (item.has("file") == item.has("heave_estimate"))
       item.fail("exactly one of 'file' (a WAMIT .3, BEMIO .h5 or Capytaine .nc file) and 'heave_estimate' (the semi-submersible hand estimate)");
@@ -208,24 +204,24 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (!definition.waves.declared())
       item["type"].fail("wave_excitation without a sea", "a top-level 'waves:' block (declared before use)");
   } else if (type == "linear_damping") {
-    item.expect_map({"name", "type", "body", "damping", "description"});
+    item.expect_section("linear_damping");
     def.type = HydroForceDefinition::Type::linear_damping;
     def.damping = read_matrix6(item["damping"]);
     check_symmetric_positive(item["damping"], def.damping, "damping");
   } else if (type == "quadratic_damping") {
-    item.expect_map({"name", "type", "body", "coefficients", "description"});
+    item.expect_section("quadratic_damping");
     def.type = HydroForceDefinition::Type::quadratic_damping;
     def.quadratic_coefficients = read_vector6(item["coefficients"]);
     if ((def.quadratic_coefficients.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
     // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.
-    item.expect_map({"name", "type", "body", "matrix", "description"});
+    item.expect_section("added_mass");
     def.type = HydroForceDefinition::Type::added_mass;
     def.added_mass = read_matrix6(item["matrix"]);
     check_symmetric_positive(item["matrix"], def.added_mass, "mass");
   } else {
-    item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
+    item.expect_section("mooring");
     def.type = HydroForceDefinition::Type::mooring;
     def.stiffness = read_matrix6(item["stiffness"]);
     check_symmetric_positive(item["stiffness"], def.stiffness, "stiffness");
