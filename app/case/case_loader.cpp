@@ -7,7 +7,7 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
-#include "app/case/control_reader.hpp"
+#include "app/case/force_kinds.hpp"
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"
@@ -397,49 +397,8 @@ void check_driver_derivatives(const CaseDefinition& definition, const Expression
 
 void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& item : section.items()) {
-    const std::string type =
-        item["type"].choice({"spring_damper", "point_force", "ground_contact", "pneumatic_compensator",
-                             "active_compensator", "added_mass",
-                             "hydrostatics", "radiation", "wave_excitation", "linear_damping", "quadratic_damping",
-                             "mooring"});
-    if (is_hydro_force_type(type)) {
-      read_hydro_force(item, type, read_unique_name(item, names), definition);
-      continue;
-    }
-    if (is_compensator_type(type)) {
-      read_compensator(item, type, read_unique_name(item, names), definition);
-      continue;
-    }
-    ForceDefinition def;
-    def.type = type == "spring_damper"    ? ForceDefinition::Type::spring_damper
-               : type == "ground_contact" ? ForceDefinition::Type::ground_contact
-                                          : ForceDefinition::Type::point_force;
-    def.name = read_unique_name(item, names);
-    if (def.type == ForceDefinition::Type::ground_contact) {
-      // A unilateral spring-damper on an earth-fixed horizontal surface (the bit on the
-      // formation, offshore-model.md sec. 3.6), preloaded at the initial state.
-      item.expect_section("ground_contact");
-      def.body_a = item["body"].text();
-      def.spring.stiffness = item["stiffness"].positive_number();
-      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
-      def.preload = item.optional("preload") ? item["preload"].non_negative_number() : 0.0;
-    } else if (def.type == ForceDefinition::Type::spring_damper) {
-      item.expect_section("spring_damper");
-      def.body_a = item["body_a"].text();
-      def.body_b = item["body_b"].text();
-      if (auto point = item.optional("point_b")) def.point_b = point->vector3();
-      def.spring.stiffness = item.optional("stiffness") ? item["stiffness"].non_negative_number() : 0.0;
-      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
-      def.spring.rest_length = item["rest_length"].non_negative_number();
-    } else {
-      item.expect_section("point_force");
-      def.body_a = item["body"].text();
-      def.force_world = item["force"].vector3();
-    }
-    if (auto point = item.optional(def.type == ForceDefinition::Type::spring_damper ? "point_a" : "point"))
-      def.point_a = point->vector3();
-    definition.item_paths[def.name] = item.path();
-    definition.forces.push_back(std::move(def));
+    const ForceKind& kind = force_kind(item["type"].choice(force_kind_names()));
+    kind.read(item, std::string(kind.type), read_unique_name(item, names), definition);
   }
 }
 

@@ -257,10 +257,6 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
 
 }  // namespace
 
-bool is_compensator_type(const std::string& type) {
-  return type == "pneumatic_compensator" || type == "active_compensator";
-}
-
 void read_compensator(const NodeReader& item, const std::string& type, const std::string& name,
                       CaseDefinition& definition) {
   CompensatorDefinition def;

@@ -76,11 +76,6 @@ void check_symmetric_positive(const NodeReader& reader, const hydro::Matrix6& ma
 
 }  // namespace
 
-bool is_hydro_force_type(const std::string& type) {
-  return type == "hydrostatics" || type == "radiation" || type == "wave_excitation" || type == "linear_damping" ||
-         type == "quadratic_damping" || type == "mooring" || type == "added_mass";
-}
-
 void read_waves(const NodeReader& reader, CaseDefinition& definition) {
   WaveDefinition& waves = definition.waves;
   const std::string type = reader["type"].choice({"regular", "jonswap", "pierson_moskowitz", "none"});

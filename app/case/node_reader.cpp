@@ -139,6 +139,10 @@ bool NodeReader::boolean() const {
 }
 
 std::string NodeReader::choice(std::initializer_list<std::string_view> options) const {
+  return choice(std::vector<std::string_view>(options));
+}
+
+std::string NodeReader::choice(const std::vector<std::string_view>& options) const {
   const std::string value = node_->is_scalar() ? node_->scalar : std::string();
   if (std::find(options.begin(), options.end(), value) != options.end()) return value;
   const std::string suggestion =

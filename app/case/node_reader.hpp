@@ -45,6 +45,7 @@ class NodeReader {
   bool boolean() const;
   /// One of `options`; anything else is an error with a did-you-mean.
   std::string choice(std::initializer_list<std::string_view> options) const;
+  std::string choice(const std::vector<std::string_view>& options) const;
 
   // --- sequences ---
   std::vector<NodeReader> items() const;
