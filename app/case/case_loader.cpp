@@ -7,7 +7,7 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
-#include "app/case/control_reader.hpp"
+#include "app/case/force_kinds.hpp"
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"
@@ -101,7 +101,7 @@ Matrix3 read_inertia(const NodeReader& reader) {
 void read_bodies(const NodeReader& section, CaseDefinition& definition) {
   std::set<std::string> names;
   for (const NodeReader& body : section.items()) {
-    body.expect_map({"name", "mass", "center_of_mass", "inertia", "description"});
+    body.expect_section("bodies[i]");
     const NodeReader name_reader = body["name"];
     const std::string name = name_reader.text();
     if (name == ModelBuilder::ground_name) name_reader.fail("'ground', which is reserved for the world", "another name");
@@ -268,8 +268,7 @@ std::string read_unique_name(const NodeReader& item, std::set<std::string>& name
 
 void read_joints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& joint : section.items()) {
-    joint.expect_map({"name", "type", "parent", "child", "parent_frame", "child_frame", "axis", "axes", "initial",
-                      "spring", "limits", "description"});
+    joint.expect_section("joints[i]", "tree");
     const std::string name = read_unique_name(joint, names);
     JointDefinition def;
     def.name = name;
@@ -289,7 +288,7 @@ void read_joints(const NodeReader& section, CaseDefinition& definition, std::set
 
 void read_loop_joints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& joint : section.items()) {
-    joint.expect_map({"name", "type", "parent", "child", "parent_frame", "child_frame", "axis", "axes", "description"});
+    joint.expect_section("joints[i]", "loop");
     LoopJointDefinition def;
     def.name = read_unique_name(joint, names);
     read_joint_kind(joint, def);
@@ -331,7 +330,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
 void read_drivers(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names,
                   const ExpressionContext& expressions) {
   for (const NodeReader& item : section.items()) {
-    item.expect_map({"name", "joint", "coordinate", "position", "velocity", "acceleration", "description"});
+    item.expect_section("drivers[i]");
     DriverDefinition def;
     def.name = read_unique_name(item, names);
     def.joint = item["joint"].text();
@@ -398,58 +397,15 @@ void check_driver_derivatives(const CaseDefinition& definition, const Expression
 
 void read_forces(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
   for (const NodeReader& item : section.items()) {
-    const std::string type =
-        item["type"].choice({"spring_damper", "point_force", "ground_contact", "pneumatic_compensator",
-                             "active_compensator", "added_mass",
-                             "hydrostatics", "radiation", "wave_excitation", "linear_damping", "quadratic_damping",
-                             "mooring"});
-    if (is_hydro_force_type(type)) {
-      read_hydro_force(item, type, read_unique_name(item, names), definition);
-      continue;
-    }
-    if (is_compensator_type(type)) {
-      read_compensator(item, type, read_unique_name(item, names), definition);
-      continue;
-    }
-    ForceDefinition def;
-    def.type = type == "spring_damper"    ? ForceDefinition::Type::spring_damper
-               : type == "ground_contact" ? ForceDefinition::Type::ground_contact
-                                          : ForceDefinition::Type::point_force;
-    def.name = read_unique_name(item, names);
-    if (def.type == ForceDefinition::Type::ground_contact) {
-      // A unilateral spring-damper on an earth-fixed horizontal surface (the bit on the
-      // formation, docs/physics/drilling-rig.md §2), preloaded at the initial state.
-      item.expect_map({"name", "type", "body", "point", "stiffness", "damping", "preload", "description"});
-      def.body_a = item["body"].text();
-      def.spring.stiffness = item["stiffness"].positive_number();
-      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
-      def.preload = item.optional("preload") ? item["preload"].non_negative_number() : 0.0;
-    } else if (def.type == ForceDefinition::Type::spring_damper) {
-      item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "stiffness", "damping",
-                       "rest_length", "description"});
-      def.body_a = item["body_a"].text();
-      def.body_b = item["body_b"].text();
-      if (auto point = item.optional("point_b")) def.point_b = point->vector3();
-      def.spring.stiffness = item.optional("stiffness") ? item["stiffness"].non_negative_number() : 0.0;
-      def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
-      def.spring.rest_length = item["rest_length"].non_negative_number();
-    } else {
-      item.expect_map({"name", "type", "body", "point", "force", "description"});
-      def.body_a = item["body"].text();
-      def.force_world = item["force"].vector3();
-    }
-    if (auto point = item.optional(def.type == ForceDefinition::Type::spring_damper ? "point_a" : "point"))
-      def.point_a = point->vector3();
-    definition.item_paths[def.name] = item.path();
-    definition.forces.push_back(std::move(def));
+    const ForceKind& kind = force_kind(item["type"].choice(force_kind_names()));
+    kind.read(item, std::string(kind.type), read_unique_name(item, names), definition);
   }
 }
 
 // ---------------------------------------------------------------- solver, output
 
 void read_solver(const NodeReader& reader, CaseDefinition& definition) {
-  reader.expect_map({"integrator", "t_start", "t_end", "step", "rtol", "atol", "max_step", "max_steps", "dynamics",
-                     "linear_solver", "constraint_tolerance", "hht_alpha"});
+  reader.expect_section("solver");
   SolverSettings& solver = definition.solver;
   if (auto integrator = reader.optional("integrator")) {
     const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida", "hht"});
@@ -509,7 +465,7 @@ void read_output(const std::optional<NodeReader>& reader, CaseDefinition& defini
   output.interval = std::min(0.01, duration / 100.0);
   output.evaluate_after = definition.solver.t_start + 0.5 * duration;
   if (!reader) return;
-  reader->expect_map({"interval", "channels", "evaluate_after"});
+  reader->expect_section("output");
   if (auto evaluate_after = reader->optional("evaluate_after")) {
     output.evaluate_after = evaluate_after->number();
     if (output.evaluate_after < definition.solver.t_start || output.evaluate_after >= definition.solver.t_end)
@@ -572,14 +528,13 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   record_sources(tree, "", definition.sources);
   ExpressionContext expressions;
   const NodeReader root(tree, "", expressions);
-  root.expect_map({"name", "description", "parameters", "environment", "waves", "bodies", "joints", "loop_joints",
-                   "constraints", "drivers", "forces", "solver", "output"});
+  root.expect_section("top-level");
 
   definition.name = root.optional("name") ? root["name"].text() : std::filesystem::path(path).stem().string();
   if (auto description = root.optional("description")) definition.description = description->text();
   read_parameters(root.optional("parameters"), expressions);
   if (auto environment = root.optional("environment")) {
-    environment->expect_map({"gravity", "water_density", "water_depth"});
+    environment->expect_section("environment");
     if (auto gravity = environment->optional("gravity")) definition.gravity = gravity->vector3();
     if (auto density = environment->optional("water_density")) definition.water.density = density->positive_number();
     if (auto depth = environment->optional("water_depth")) {

@@ -76,9 +76,7 @@ SealFriction read_friction(const NodeReader& reader) {
 }
 
 void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
-  item.expect_map({"name", "type", "description", "stroke", "piston_area", "gas_volume", "gas_pressure",
-                   "atmospheric_pressure", "polytropic_exponent", "hysteresis_speed", "initial_temperature", "cooling",
-                   "piping", "seal_friction", "end_stops"});
+  item.expect_section("pneumatic_compensator");
   def.stroke = read_stroke(item["stroke"]);
   PneumaticParameters& p = def.pneumatic;
   p.piston_area = item["piston_area"].positive_number();
@@ -138,7 +136,7 @@ void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
 }
 
 void read_force_actuator(const NodeReader& reader, ForceActuatorParameters& a) {
-  reader.expect_map({"type", "time_constant", "max_force", "max_rate"});
+  reader.expect_section("actuator", "force");
   a.time_constant = non_negative_or(reader, "time_constant", a.time_constant);
   a.max_force = positive_or(reader, "max_force", a.max_force);
   // A rate limit needs the lag: ActiveCompensator's rule, checked when the scene builds it.
@@ -146,9 +144,7 @@ void read_force_actuator(const NodeReader& reader, ForceActuatorParameters& a) {
 }
 
 void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& def) {
-  reader.expect_map({"type", "piston_area", "annulus_area", "volume_a", "volume_b", "stroke_range", "bulk_modulus",
-                     "internal_leakage", "external_leakage", "atmospheric_pressure", "supply_pressure",
-                     "tank_pressure", "initial_pressures", "seal_friction", "valve", "max_speed"});
+  reader.expect_section("actuator", "hydraulic");
   HydraulicActuatorParameters& h = def.active.hydraulic;
   HydraulicCylinderParameters& c = h.cylinder;
   c.area_a = reader["piston_area"].positive_number();
@@ -214,7 +210,7 @@ void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& de
 }
 
 void read_active(const NodeReader& item, CompensatorDefinition& def) {
-  item.expect_map({"name", "type", "description", "stroke", "actuator", "controller", "measurement"});
+  item.expect_section("active_compensator");
   def.stroke = read_stroke(item["stroke"]);
   ActiveCompensatorParameters& p = def.active;
   const NodeReader actuator = item["actuator"];
@@ -226,8 +222,7 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
     read_hydraulic_actuator(actuator, def);
 
   const NodeReader controller = item["controller"];
-  controller.expect_map({"kp", "ki", "kd", "tracking_time", "velocity_feedforward", "acceleration_feedforward",
-                         "centring_time", "centre_stroke"});
+  controller.expect_section("controller");
   p.gains.proportional = non_negative_or(controller, "kp", 0.0);
   p.gains.integral = non_negative_or(controller, "ki", 0.0);
   p.gains.derivative = non_negative_or(controller, "kd", 0.0);
@@ -238,7 +233,7 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
   p.centre_stroke = controller.number_or("centre_stroke", 0.0);
 
   if (auto measurement = item.optional("measurement")) {
-    measurement->expect_map({"controlled_point", "mru"});
+    measurement->expect_section("measurement");
     if (auto point = measurement->optional("controlled_point")) {
       auto [body, position] = read_body_point(*point);
       def.controlled_body = body;
@@ -261,10 +256,6 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
 }
 
 }  // namespace
-
-bool is_compensator_type(const std::string& type) {
-  return type == "pneumatic_compensator" || type == "active_compensator";
-}
 
 void read_compensator(const NodeReader& item, const std::string& type, const std::string& name,
                       CaseDefinition& definition) {

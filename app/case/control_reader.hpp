@@ -5,9 +5,6 @@
 
 namespace heavesim {
 
-/// True for the `type` values read here.
-bool is_compensator_type(const std::string& type);
-
 /// Reads forces[i] of type pneumatic_compensator or active_compensator, whose name has
 /// been read (and checked unique) already; checks every parameter that can be checked
 /// without the model (InputError naming the key).

@@ -62,11 +62,14 @@ struct HydroForceDefinition {
   bool hst_includes_gravity = false;
   /// radiation: state space or convolution, kernel sampling, modes (hydro's own settings)
   hydro::RadiationMemorySettings memory;
-  // linear_damping: B [N s/m ...]; mooring, hydrostatics given as `stiffness`: K [N/m ...];
-  // added_mass: A [kg, kg m^2] about the reference point; WAMIT order, world axes
-  hydro::Matrix6 matrix = hydro::Matrix6::Zero();
-  // quadratic_damping: b_quad [N s^2/m^2, N m s^2/rad^2]; mooring: pretension f0 [N, N m]
-  hydro::Vector6 vector = hydro::Vector6::Zero();
+  // About the reference point, WAMIT order, world axes:
+  /// hydrostatics given as `stiffness` (C), mooring (K) [N/m, N, N m/rad]
+  hydro::Matrix6 stiffness = hydro::Matrix6::Zero();
+  hydro::Matrix6 damping = hydro::Matrix6::Zero();     // linear_damping: B [N s/m, N s, N m s/rad]
+  hydro::Matrix6 added_mass = hydro::Matrix6::Zero();  // added_mass: A [kg, kg m, kg m^2]
+  /// quadratic_damping: b_quad [N s^2/m^2, N m s^2/rad^2]
+  hydro::Vector6 quadratic_coefficients = hydro::Vector6::Zero();
+  hydro::Vector6 pretension = hydro::Vector6::Zero();  // mooring: f0 [N, N m]
 };
 
 }  // namespace heavesim

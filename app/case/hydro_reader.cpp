@@ -76,27 +76,21 @@ void check_symmetric_positive(const NodeReader& reader, const hydro::Matrix6& ma
 
 }  // namespace
 
-bool is_hydro_force_type(const std::string& type) {
-  return type == "hydrostatics" || type == "radiation" || type == "wave_excitation" || type == "linear_damping" ||
-         type == "quadratic_damping" || type == "mooring" || type == "added_mass";
-}
-
 void read_waves(const NodeReader& reader, CaseDefinition& definition) {
   WaveDefinition& waves = definition.waves;
   const std::string type = reader["type"].choice({"regular", "jonswap", "pierson_moskowitz", "none"});
   if (type == "none") {
-    reader.expect_map({"type"});
+    reader.expect_section("waves", "none");
     return;
   }
   if (type == "regular") {
-    reader.expect_map({"type", "amplitude", "period", "heading", "phase", "ramp"});
+    reader.expect_section("waves", "regular");
     waves.type = WaveDefinition::Type::regular;
     waves.amplitude = reader["amplitude"].non_negative_number();
     waves.period = reader["period"].positive_number();
     waves.phase = reader.number_or("phase", 0.0);
   } else {
-    reader.expect_map({"type", "hs", "tp", "gamma", "components", "seed", "discretization", "min_frequency",
-                       "max_frequency", "heading", "ramp"});
+    reader.expect_section("waves", "irregular");
     waves.type = type == "jonswap" ? WaveDefinition::Type::jonswap : WaveDefinition::Type::pierson_moskowitz;
     waves.significant_height = reader["hs"].positive_number();
     waves.peak_period = reader["tp"].positive_number();
@@ -132,9 +126,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
   HydroForceDefinition def;
   def.name = name;
   if (type == "hydrostatics") {
-    item.expect_map({"name", "type", "body", "hst", "mesh", "stiffness", "displaced_volume", "hst_includes_gravity",
-                     "length_scale",
-                     "description"});
+    item.expect_section("hydrostatics");
     def.type = HydroForceDefinition::Type::hydrostatics;
     if (item.has("hst") + item.has("mesh") + item.has("stiffness") != 1)
       item.fail("exactly one of 'hst' (linear: a WAMIT .hst, BEMIO .h5 or Capytaine .nc file), 'stiffness' (linear, a "
@@ -142,8 +134,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (item.has("stiffness")) {
       // Linear hydrostatics given directly (e.g. from the hull's A_wp, V and waterplane
       // inertias): the buoyancy's restoring only; gravity acts on the bodies' masses.
-      def.matrix = read_matrix6(item["stiffness"]);
-      check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
+      def.stiffness = read_matrix6(item["stiffness"]);
+      check_symmetric_positive(item["stiffness"], def.stiffness, "stiffness");
     } else {
       def.file_key = item.has("hst") ? "hst" : "mesh";
     }
@@ -159,8 +151,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       def.hst_includes_gravity = gravity->boolean();
     }
   } else if (type == "radiation") {
-    item.expect_map({"name", "type", "body", "file", "memory", "state_space_order", "kernel_duration", "kernel_step",
-                     "modes", "length_scale", "description"});
+    item.expect_section("radiation");
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
     hydro::RadiationMemorySettings& memory = def.memory;
@@ -179,7 +170,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
       }
     }
   } else if (type == "wave_excitation") {
-    item.expect_map({"name", "type", "body", "file", "heave_estimate", "length_scale", "description"});
+    item.expect_section("wave_excitation");
     def.type = HydroForceDefinition::Type::wave_excitation;
     if (item.has("file") == item.has("heave_estimate"))
       item.fail("exactly one of 'file' (a WAMIT .3, BEMIO .h5 or Capytaine .nc file) and 'heave_estimate' (the semi-submersible hand estimate)");
@@ -208,28 +199,28 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (!definition.waves.declared())
       item["type"].fail("wave_excitation without a sea", "a top-level 'waves:' block (declared before use)");
   } else if (type == "linear_damping") {
-    item.expect_map({"name", "type", "body", "damping", "description"});
+    item.expect_section("linear_damping");
     def.type = HydroForceDefinition::Type::linear_damping;
-    def.matrix = read_matrix6(item["damping"]);
-    check_symmetric_positive(item["damping"], def.matrix, "damping");
+    def.damping = read_matrix6(item["damping"]);
+    check_symmetric_positive(item["damping"], def.damping, "damping");
   } else if (type == "quadratic_damping") {
-    item.expect_map({"name", "type", "body", "coefficients", "description"});
+    item.expect_section("quadratic_damping");
     def.type = HydroForceDefinition::Type::quadratic_damping;
-    def.vector = read_vector6(item["coefficients"]);
-    if ((def.vector.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+    def.quadratic_coefficients = read_vector6(item["coefficients"]);
+    if ((def.quadratic_coefficients.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
     // Constant added mass (e.g. the fallback A of docs/physics/drilling-rig.md §4) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.
-    item.expect_map({"name", "type", "body", "matrix", "description"});
+    item.expect_section("added_mass");
     def.type = HydroForceDefinition::Type::added_mass;
-    def.matrix = read_matrix6(item["matrix"]);
-    check_symmetric_positive(item["matrix"], def.matrix, "mass");
+    def.added_mass = read_matrix6(item["matrix"]);
+    check_symmetric_positive(item["matrix"], def.added_mass, "mass");
   } else {
-    item.expect_map({"name", "type", "body", "stiffness", "pretension", "description"});
+    item.expect_section("mooring");
     def.type = HydroForceDefinition::Type::mooring;
-    def.matrix = read_matrix6(item["stiffness"]);
-    check_symmetric_positive(item["stiffness"], def.matrix, "stiffness");
-    if (auto pretension = item.optional("pretension")) def.vector = read_vector6(*pretension);
+    def.stiffness = read_matrix6(item["stiffness"]);
+    check_symmetric_positive(item["stiffness"], def.stiffness, "stiffness");
+    if (auto pretension = item.optional("pretension")) def.pretension = read_vector6(*pretension);
   }
   def.body = item["body"].text();
   if (!def.file_key.empty()) {

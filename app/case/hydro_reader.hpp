@@ -6,9 +6,6 @@
 
 namespace heavesim {
 
-/// True for the `type` values read here.
-bool is_hydro_force_type(const std::string& type);
-
 /// Reads `waves:` into definition.waves; checks every value that can be checked alone.
 void read_waves(const NodeReader& reader, CaseDefinition& definition);
 

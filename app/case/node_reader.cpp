@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "app/case/case_schema.hpp"
+
 namespace heavesim {
 
 namespace {
@@ -22,7 +24,8 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
   return previous[b.size()];
 }
 
-std::string join(std::initializer_list<std::string_view> words) {
+template <class Words>
+std::string join(const Words& words) {
   std::string text;
   for (std::string_view word : words) text += (text.empty() ? "" : ", ") + std::string(word);
   return text;
@@ -50,6 +53,14 @@ void NodeReader::fail(const std::string& found, const std::string& expected) con
 }
 
 void NodeReader::expect_map(std::initializer_list<std::string_view> allowed) const {
+  expect_keys(std::vector<std::string_view>(allowed));
+}
+
+void NodeReader::expect_section(std::string_view section, std::string_view form) const {
+  expect_keys(accepted_keys(section, form));
+}
+
+void NodeReader::expect_keys(const std::vector<std::string_view>& allowed) const {
   if (!node_->is_map()) fail("a map with keys " + join(allowed));
   for (const CaseNode::Entry& entry : node_->entries) {
     if (std::find(allowed.begin(), allowed.end(), entry.key) != allowed.end()) continue;
@@ -128,6 +139,10 @@ bool NodeReader::boolean() const {
 }
 
 std::string NodeReader::choice(std::initializer_list<std::string_view> options) const {
+  return choice(std::vector<std::string_view>(options));
+}
+
+std::string NodeReader::choice(const std::vector<std::string_view>& options) const {
   const std::string value = node_->is_scalar() ? node_->scalar : std::string();
   if (std::find(options.begin(), options.end(), value) != options.end()) return value;
   const std::string suggestion =

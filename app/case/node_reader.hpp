@@ -28,6 +28,8 @@ class NodeReader {
   // --- maps ---
   /// Requires a map whose keys are all in `allowed` (unknown keys: did-you-mean).
   void expect_map(std::initializer_list<std::string_view> allowed) const;
+  /// The same with the keys of a schema section (app/case/case_schema.hpp) of one form.
+  void expect_section(std::string_view section, std::string_view form = {}) const;
   bool has(const std::string& key) const;
   /// A required entry.
   NodeReader operator[](const std::string& key) const;
@@ -43,6 +45,7 @@ class NodeReader {
   bool boolean() const;
   /// One of `options`; anything else is an error with a did-you-mean.
   std::string choice(std::initializer_list<std::string_view> options) const;
+  std::string choice(const std::vector<std::string_view>& options) const;
 
   // --- sequences ---
   std::vector<NodeReader> items() const;
@@ -55,6 +58,8 @@ class NodeReader {
   [[noreturn]] void fail(const std::string& found, const std::string& expected) const;
 
  private:
+  void expect_keys(const std::vector<std::string_view>& allowed) const;
+
   const CaseNode* node_;
   std::string path_;
   const ExpressionContext* expressions_;

@@ -71,7 +71,7 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
     const bem::WamitScaling s = scaling(definition, force);
     using Type = HydroForceDefinition::Type;
     if (force.type == Type::added_mass) {
-      add_inertia(force.body, hydro::added_inertia_in_body_frame(force.matrix));
+      add_inertia(force.body, hydro::added_inertia_in_body_frame(force.added_mass));
     } else if (force.type == Type::radiation) {
       if (!radiating_bodies.insert(force.body).second)
         throw hydro_error(definition, force.name, "body", "a second radiation element on '" + force.body + "'",
@@ -88,7 +88,7 @@ HydroData read_hydro_data(const CaseDefinition& definition) {
     } else if (force.type == Type::wave_excitation) {
       data.excitation[force.name] = read_checked(definition, force, [&] { return bem::read_excitation_file(force.file, s); });
     } else if (force.type == Type::hydrostatics && force.file.empty()) {
-      data.stiffness[force.name] = force.matrix;
+      data.stiffness[force.name] = force.stiffness;
     } else if (force.type == Type::hydrostatics && !force.nonlinear) {
       data.stiffness[force.name] = read_checked(definition, force, [&] { return bem::read_hydrostatic_stiffness_file(force.file, s); });
     } else if (force.type == Type::hydrostatics) {
@@ -170,15 +170,15 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
           recorded_waves = waves;
           break;
         case Type::linear_damping:
-          element = std::make_unique<hydro::BodyDamping>(force.name, link, force.matrix);
+          element = std::make_unique<hydro::BodyDamping>(force.name, link, force.damping);
           break;
         case Type::quadratic_damping:
-          element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.vector);
+          element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.quadratic_coefficients);
           break;
         case Type::added_mass:
           continue;  // in the body's inertia (read_hydro_data)
         case Type::mooring:
-          element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.matrix, force.vector,
+          element = std::make_unique<hydro::LinearRestoring>(force.name, link, force.stiffness, force.pretension,
                                                              Transform::Identity());
           break;
       }

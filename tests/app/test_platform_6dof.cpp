@@ -61,7 +61,8 @@ Matrix6 frc_mass_matrix() {
 /// The matrix of a hydro element of the loaded case (mooring stiffness, viscous damping).
 Matrix6 case_matrix(const CaseDefinition& definition, const std::string& name) {
   for (const HydroForceDefinition& force : definition.hydro_forces)
-    if (force.name == name) return force.matrix;
+    if (force.name == name)
+      return force.type == HydroForceDefinition::Type::linear_damping ? force.damping : force.stiffness;
   ADD_FAILURE() << "no force element " << name;
   return Matrix6::Zero();
 }

@@ -1,0 +1,327 @@
+#include "app/case/case_schema.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace heavesim {
+namespace {
+
+constexpr KeySpec root_keys[] = {
+    {"name", "text", "–", "the file name without `.yaml`", "case name; names the result file"},
+    {"description", "text", "–", "–", "free text"},
+    {"include", "text or list", "–", "none", "files merged first (consumed by the merge, app/case/case_merge.cpp)",
+     "composition"},
+    {"parameters", "map", "–", "none", "name: value numbers usable in later expressions"},
+    {"environment", "map", "–", "see below", "gravity and water"},
+    {"waves", "map", "–", "none", "the incident sea"},
+    {"bodies", "list", "–", "required", "the bodies"},
+    {"joints", "list", "–", "required", "the spanning tree (may be empty)"},
+    {"loop_joints", "list", "–", "none", "joints that close kinematic loops"},
+    {"constraints", "list", "–", "none", "distance and coupler constraints"},
+    {"drivers", "list", "–", "none", "prescribed motion of joint coordinates"},
+    {"forces", "list", "–", "none", "force elements"},
+    {"solver", "map", "–", "required", "integration settings"},
+    {"output", "map", "–", "everything", "what to record and how often"},
+};
+
+constexpr KeySpec environment_keys[] = {
+    {"gravity", "vector", "m/s²", "`[0, 0, -9.81]`", "gravitational acceleration, world frame"},
+    {"water_density", "number", "kg/m³", "1025", "rho of the hydro data and meshes"},
+    {"water_depth", "number", "m", "`infinite`", "h for the dispersion relation"},
+};
+
+constexpr KeySpec waves_keys[] = {
+    {"type", "choice", "–", "required", "regular, jonswap, pierson_moskowitz or none"},
+    {"amplitude", "number", "m", "required (regular)", "a = H/2", "regular"},
+    {"period", "number", "s", "required (regular)", "T", "regular"},
+    {"hs", "number", "m", "required (irregular)", "significant wave height", "irregular"},
+    {"tp", "number", "s", "required (irregular)", "peak period", "irregular"},
+    {"gamma", "number", "–", "3.3", "JONSWAP peak enhancement", "irregular"},
+    {"components", "number", "–", "200", "number of regular components", "irregular"},
+    {"seed", "number", "–", "1", "seed of the random phases", "irregular"},
+    {"discretization", "choice", "–", "`equal_energy`", "equal_energy or equal_spacing", "irregular"},
+    {"min_frequency", "number", "rad/s", "0.1", "lower end of the component band", "irregular"},
+    {"max_frequency", "number", "rad/s", "3.0", "upper end of the component band", "irregular"},
+    {"heading", "number", "rad", "0", "direction the waves travel", "regular irregular"},
+    {"phase", "number", "rad", "0", "phase of the regular wave", "regular"},
+    {"ramp", "number or map", "s, or map", "none", "start-up ramp", "regular irregular"},
+};
+
+constexpr KeySpec body_keys[] = {
+    {"name", "text", "–", "required", "unique; not ground"},
+    {"mass", "number", "kg", "required", "> 0, or 0 for a massless connector"},
+    {"center_of_mass", "vector", "m", "`[0, 0, 0]`", "CoM in the body frame"},
+    {"inertia", "list or map", "kg·m²", "required", "about the CoM, body axes"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec joint_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "fixed, revolute, prismatic, cylindrical, universal, spherical, free"},
+    {"parent", "text", "–", "required", "parent body or ground"},
+    {"child", "text", "–", "required", "child body"},
+    {"parent_frame", "map", "–", "identity", "the joint frame in the parent body frame"},
+    {"child_frame", "map", "–", "identity", "the joint frame in the child body frame"},
+    {"axis", "vector", "–", "required for revolute, prismatic, cylindrical", "unit axis in the joint frame"},
+    {"axes", "list", "–", "required for universal", "two perpendicular unit axes"},
+    {"initial", "map", "–", "neutral, at rest", "initial state", "tree"},
+    {"spring", "map", "–", "none", "linear spring-damper on the coordinates", "tree"},
+    {"limits", "map", "–", "none", "soft end stops", "tree"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec driver_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"joint", "text", "–", "required", "the driven joint"},
+    {"coordinate", "number", "–", "0", "which of its coordinates"},
+    {"position", "expression", "m or rad", "required", "f(t)"},
+    {"velocity", "expression", "m/s or rad/s", "by differences", "f'(t)"},
+    {"acceleration", "expression", "m/s² or rad/s²", "by differences", "f''(t)"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec spring_damper_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "spring_damper"},
+    {"body_a", "text", "–", "required", "first end's body (or ground)"},
+    {"point_a", "vector", "m", "`[0, 0, 0]`", "first end, body a's frame"},
+    {"body_b", "text", "–", "required", "second end's body (or ground)"},
+    {"point_b", "vector", "m", "`[0, 0, 0]`", "second end, body b's frame"},
+    {"stiffness", "number", "N/m", "0", "k"},
+    {"damping", "number", "N s/m", "0", "c"},
+    {"rest_length", "number", "m", "required", "l0"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec point_force_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "point_force"},
+    {"body", "text", "–", "required", "the loaded body"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "the loaded point, body frame"},
+    {"force", "vector", "N", "required", "constant force, world frame"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec ground_contact_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "ground_contact"},
+    {"body", "text", "–", "required", "the body that touches the ground"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "the contact point, body frame"},
+    {"stiffness", "number", "N/m", "required", "k_f > 0"},
+    {"damping", "number", "N s/m", "0", "c_f"},
+    {"preload", "number", "N", "0", "contact force at the initial state"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec hydrostatics_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "hydrostatics"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"hst", "text", "–", "one of hst, mesh, stiffness", "WAMIT .hst, BEMIO .h5 or Capytaine .nc file"},
+    {"mesh", "text", "–", "one of hst, mesh, stiffness", ".gdf or .stl hull (nonlinear)"},
+    {"stiffness", "matrix", "N/m, N, N m/rad", "one of hst, mesh, stiffness", "C given directly"},
+    {"displaced_volume", "number", "m³", "buoyancy = weight", "V for f0 = rho g V"},
+    {"hst_includes_gravity", "boolean", "–", "`false`", "the .hst holds WAMIT's gravity terms"},
+    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec radiation_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "radiation"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"file", "text", "–", "required", "WAMIT .1, BEMIO .h5 or Capytaine .nc file"},
+    {"memory", "choice", "–", "`state_space`", "state_space or convolution"},
+    {"state_space_order", "number", "–", "12", "states per realised mode pair, 2 .. 24"},
+    {"kernel_duration", "number", "s", "60", "length of K(t)"},
+    {"kernel_step", "number", "s", "0.05", "sample step of K(t)"},
+    {"modes", "list", "–", "all", "WAMIT modes 1..6 whose memory is kept"},
+    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec wave_excitation_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "wave_excitation"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"file", "text", "–", "one of file, heave_estimate", "WAMIT .3, BEMIO .h5 or Capytaine .nc file"},
+    {"heave_estimate", "map", "–", "one of file, heave_estimate", "semi-submersible hand estimate"},
+    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec linear_damping_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "linear_damping"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"damping", "matrix", "N s/m, N s, N m s/rad", "required", "B, 6 x 6 or its diagonal"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec quadratic_damping_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "quadratic_damping"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"coefficients", "vector", "N s²/m², N m s²/rad²", "required", "b_i >= 0"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec added_mass_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "added_mass"},
+    {"body", "text", "–", "required", "the floating body"},
+    {"matrix", "matrix", "kg, kg m, kg m²", "required", "A, 6 x 6 or its diagonal"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec mooring_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "mooring"},
+    {"body", "text", "–", "required", "the moored body"},
+    {"stiffness", "matrix", "N/m, N, N m/rad", "required", "K, 6 x 6 or its diagonal"},
+    {"pretension", "vector", "N, N m", "0", "f0"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec pneumatic_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "pneumatic_compensator"},
+    {"description", "text", "–", "–", "free text"},
+    {"stroke", "map", "–", "required", "where it acts"},
+    {"piston_area", "number", "m²", "required", "A"},
+    {"gas_volume", "number", "m³", "required", "V0 at mid-stroke"},
+    {"gas_pressure", "number or balance", "Pa", "`balance`", "absolute gas pressure at mid-stroke"},
+    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod side"},
+    {"polytropic_exponent", "number or map", "–", "1.4", "n, or compression and expansion"},
+    {"hysteresis_speed", "number", "m/s", "0.01", "width of the n_c/n_e switch"},
+    {"initial_temperature", "number", "K", "288.15", "T0"},
+    {"cooling", "map", "–", "none", "Newton cooling to the vessel walls"},
+    {"piping", "map", "–", "none", "pipe losses"},
+    {"seal_friction", "map", "–", "none", "Coulomb and viscous seal friction"},
+    {"end_stops", "map", "–", "`{lower: -3.81, upper: 3.81, stiffness: 1e8, damping: 1e6}`", "one-sided end stops"},
+};
+
+constexpr KeySpec active_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "active_compensator"},
+    {"description", "text", "–", "–", "free text"},
+    {"stroke", "map", "–", "required", "where it acts"},
+    {"actuator", "map", "–", "required", "force or hydraulic actuator"},
+    {"controller", "map", "–", "required", "PID and feed-forward"},
+    {"measurement", "map", "–", "none", "controlled point or MRU"},
+};
+
+constexpr KeySpec actuator_keys[] = {
+    {"type", "choice", "–", "required", "force or hydraulic"},
+    {"time_constant", "number", "s", "0.1", "first-order lag", "force"},
+    {"max_force", "number", "N", "3.9e5", "saturation", "force"},
+    {"max_rate", "number", "N/s", "none", "rate limit", "force"},
+    {"piston_area", "number", "m²", "required", "A_A", "hydraulic"},
+    {"annulus_area", "number", "m²", "required", "A_B", "hydraulic"},
+    {"volume_a", "number", "m³", "required", "chamber A volume at mid-stroke", "hydraulic"},
+    {"volume_b", "number", "m³", "required", "chamber B volume at mid-stroke", "hydraulic"},
+    {"stroke_range", "map", "m", "`{lower: 0, upper: 0}`", "the cylinder's stroke", "hydraulic"},
+    {"bulk_modulus", "number", "Pa", "1e9", "effective beta", "hydraulic"},
+    {"internal_leakage", "number", "m³/(s·Pa)", "0", "cross-piston leakage", "hydraulic"},
+    {"external_leakage", "number", "m³/(s·Pa)", "0", "leakage to tank", "hydraulic"},
+    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod cross-section", "hydraulic"},
+    {"supply_pressure", "number", "Pa", "required", "constant supply pressure", "hydraulic"},
+    {"tank_pressure", "number", "Pa", "2e5", "return pressure", "hydraulic"},
+    {"initial_pressures", "list", "Pa", "zero force, p_A + p_B = p_S", "[p_A, p_B]", "hydraulic"},
+    {"seal_friction", "map", "–", "none", "as for the pneumatic compensator", "hydraulic"},
+    {"valve", "map", "–", "required", "servo valve", "hydraulic"},
+    {"max_speed", "number", "m/s", "K √((p_S − p_T)/2) / A_A", "largest stroke speed asked for", "hydraulic"},
+};
+
+constexpr KeySpec controller_keys[] = {
+    {"kp", "number", "N/m / 1/s", "0", "proportional gain"},
+    {"ki", "number", "N/(m·s) / 1/s²", "0", "integral gain"},
+    {"kd", "number", "N·s/m / –", "0", "derivative gain"},
+    {"tracking_time", "number", "s", "√(kd/ki), or kp/ki", "anti-windup time constant"},
+    {"velocity_feedforward", "number", "N·s/m / –", "0", "K_v"},
+    {"acceleration_feedforward", "number", "N·s²/m / s", "0", "K_a; needs measurement.mru"},
+    {"centring_time", "number", "s", "none", "stroke centring time constant"},
+    {"centre_stroke", "number", "m", "0", "s_c"},
+};
+
+constexpr KeySpec measurement_keys[] = {
+    {"controlled_point", "map", "–", "the moving side (joint form: the child body's reference point)",
+     "the point whose heave is held"},
+    {"mru", "map", "–", "none", "measure through an MRU"},
+};
+
+constexpr KeySpec solver_keys[] = {
+    {"integrator", "choice", "–", "`ida`", "rk4, dopri5, verner6, fehlberg8, ida, hht"},
+    {"t_start", "number", "s", "0", "start time"},
+    {"t_end", "number", "s", "required", "end time"},
+    {"step", "number", "s", "required for `rk4` and `hht`", "fixed step"},
+    {"rtol", "number", "–", "1e-8", "relative tolerance"},
+    {"atol", "number", "–", "1e-10", "absolute tolerance"},
+    {"max_step", "number", "s", "0 (no limit)", "largest adaptive step"},
+    {"max_steps", "number", "–", "100000", "most steps between two outputs"},
+    {"dynamics", "choice", "–", "`articulated_body`", "articulated_body or composite_rigid_body"},
+    {"linear_solver", "choice", "–", "`dense`", "dense or sparse"},
+    {"constraint_tolerance", "number", "m or rad", "1e-10", "largest |Phi| accepted"},
+    {"hht_alpha", "number", "–", "0", "HHT numerical damping"},
+};
+
+constexpr KeySpec output_keys[] = {
+    {"interval", "number", "s", "min(0.01, duration/100)", "time between samples"},
+    {"channels", "list", "–", "all", "bodies, joints, reactions, energy, forces"},
+    {"evaluate_after", "number", "s", "t_start + duration/2", "start of the summary window"},
+};
+
+constexpr SchemaSection sections[] = {
+    {"top-level", root_keys},
+    {"environment", environment_keys},
+    {"waves", waves_keys},
+    {"bodies[i]", body_keys},
+    {"joints[i]", joint_keys},
+    {"drivers[i]", driver_keys},
+    {"spring_damper", spring_damper_keys},
+    {"point_force", point_force_keys},
+    {"ground_contact", ground_contact_keys},
+    {"hydrostatics", hydrostatics_keys},
+    {"radiation", radiation_keys},
+    {"wave_excitation", wave_excitation_keys},
+    {"linear_damping", linear_damping_keys},
+    {"quadratic_damping", quadratic_damping_keys},
+    {"added_mass", added_mass_keys},
+    {"mooring", mooring_keys},
+    {"pneumatic_compensator", pneumatic_keys},
+    {"active_compensator", active_keys},
+    {"actuator", actuator_keys},
+    {"controller", controller_keys},
+    {"measurement", measurement_keys},
+    {"solver", solver_keys},
+    {"output", output_keys},
+};
+
+bool in_form(std::string_view forms, std::string_view form) {
+  for (std::size_t start = 0; start <= forms.size();) {
+    const std::size_t end = std::min(forms.find(' ', start), forms.size());
+    if (forms.substr(start, end - start) == form) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::span<const SchemaSection> case_schema() { return sections; }
+
+std::span<const KeySpec> schema_keys(std::string_view section) {
+  for (const SchemaSection& s : sections)
+    if (s.name == section) return s.keys;
+  throw std::out_of_range("no schema section '" + std::string(section) + "'");
+}
+
+std::vector<std::string_view> accepted_keys(std::string_view section, std::string_view form) {
+  std::vector<std::string_view> keys;
+  for (const KeySpec& spec : schema_keys(section))
+    if (spec.forms.empty() || (!form.empty() && in_form(spec.forms, form))) keys.push_back(spec.key);
+  return keys;
+}
+
+}  // namespace heavesim
