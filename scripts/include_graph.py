@@ -32,6 +32,7 @@ LAYERS = [
 ISOLATED = {"validation/oracles"}
 # kernel/ sub-folders, lowest first.
 KERNEL_LAYERS = [
+    ("kernel/.",),  # files directly in kernel/ (parameter_error.hpp): the vocabulary every layer uses
     ("kernel/spatial",),
     ("kernel/math",),
     ("kernel/joints",),
@@ -62,7 +63,10 @@ def layer_index(folder, layers):
 
 
 def folder_of(relative_path, depth):
+    """The file's folder, `depth` levels deep; "kernel/." for a file directly in kernel/."""
     parts = pathlib.PurePosixPath(relative_path).parts[:-1]
+    if len(parts) < depth and parts and parts[0] == "kernel":
+        return "kernel/."
     return "/".join(parts[:depth])
 
 

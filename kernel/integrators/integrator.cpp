@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "kernel/parameter_error.hpp"
+
 #include "kernel/integrators/erk_integrator.hpp"
 #include "kernel/integrators/hht_integrator.hpp"
 #include "kernel/integrators/ida_integrator.hpp"
@@ -71,7 +73,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, 
       return owning(std::make_unique<OdeResidual>(system),
                     [&](OdeResidual& residual) { return std::make_unique<IdaIntegrator>(residual, settings); });
     case IntegrationMethod::hht:
-      throw std::invalid_argument("the HHT integrator needs a mechanical system (second-order form)");
+      throw ParameterError("integrator", "'hht' for a first-order system without a second-order form",
+                           "rk4, dopri5, verner6, fehlberg8 or ida (HHT integrates mechanical systems only)");
     default:
       return make_explicit(settings, system);
   }
