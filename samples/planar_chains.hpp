@@ -20,7 +20,8 @@ struct PlanarLink {
   double inertia;  // kg m^2, about the CoM, about the pin axis (and the other transverse axis)
 };
 
-/// Bodies "link1".."linkN" on joints "pin1".."pinN". Each link is a slender rod: its
+/// Bodies "link1".."linkN" on joints "pin1".."pinN" (two links: the double pendulum of
+/// validation K1). Each link is a slender rod: its
 /// inertia about the CoM is diag(inertia, inertia, 0) in the link frame (nothing
 /// about the rod's own axis), CoM at (0, 0, -com).
 Model planar_chain(const std::vector<PlanarLink>& links, double gravity = 9.81);

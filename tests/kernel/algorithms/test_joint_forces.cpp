@@ -1,15 +1,19 @@
 // Joint elements: a spring-mass oscillator follows x = A cos(w t) with the elastic
 // energy 1/2 k A^2; a soft limit holds a weight at the static penetration m g / k and
-// does nothing off the stop.
+// does nothing off the stop; the spring-dampers of a random tree's scalar joints give
+// tau = -k (q - rest) - c v, coordinate by coordinate.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
+
 #include "kernel/algorithms/articulated_body.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "samples/oscillators.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -52,6 +56,42 @@ TEST(Dynamics, SoftLimitHoldsTheWeightAtTheStaticPenetration) {
   tau.setZero();
   add_joint_element_forces(model, VectorX::Constant(1, 0.5), v, tau);
   EXPECT_EQ(tau[0], 0.0);
+}
+
+TEST(JointForces, ScalarJointSpringDampersAreLinearInDisplacementAndRate) {
+  std::mt19937_64 random(81);
+  samples::RandomTreeOptions options;
+  options.bodies = 21;
+  const Model model = samples::random_tree(random, options);
+  const samples::RandomState state = samples::random_state(model, random);
+  VectorX tau = VectorX::Zero(model.nv);
+  add_joint_element_forces(model, state.q, state.v, tau);
+  VectorX expected = VectorX::Zero(model.nv);
+  int springs = 0;
+  for (int j = 1; j < model.num_links(); ++j) {
+    const Joint& joint = model.joints[j];
+    if (!joint.spring) continue;
+    ASSERT_TRUE(joint_has_scalar_coordinates(joint.type)) << joint.name;
+    ++springs;
+    for (int k = 0; k < joint.nv; ++k) {
+      const double displacement = state.q[joint.q_index + k] - joint.spring->rest[k];
+      expected[joint.v_index + k] = -joint.spring->stiffness[k] * displacement - joint.spring->damping[k] * state.v[joint.v_index + k];
+    }
+  }
+  EXPECT_GT(springs, 0);
+  // Each entry is one product pair of order 10 N: bound 1e-13 N.
+  EXPECT_LT((tau - expected).norm(), 1e-13);
+  // The elastic energy is 1/2 k (q - rest)^2 summed over the same coordinates.
+  double energy = 0.0;
+  for (int j = 1; j < model.num_links(); ++j) {
+    const Joint& joint = model.joints[j];
+    if (!joint.spring) continue;
+    for (int k = 0; k < joint.nv; ++k) {
+      const double displacement = state.q[joint.q_index + k] - joint.spring->rest[k];
+      energy += 0.5 * joint.spring->stiffness[k] * displacement * displacement;
+    }
+  }
+  EXPECT_NEAR(joint_elastic_energy(model, state.q), energy, 1e-13 * (1.0 + energy));
 }
 
 }  // namespace
