@@ -30,9 +30,10 @@
 
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
-#include "validation/checks/planar_models.hpp"
+#include "samples/planar_chains.hpp"
 #include "validation/checks/validation_suite.hpp"
 #include "validation/oracles/four_bar_parallelogram.hpp"
+#include "validation/oracles/planar_chain_oracle.hpp"
 #include "validation/oracles/reference_integrator.hpp"
 #include "validation/oracles/slider_crank.hpp"
 
@@ -96,7 +97,7 @@ ErrorMeasure pendulum_error(int links) {
     const std::vector<Eigen::VectorXd> exact = oracle::integrate_reference(rhs, 0.0, y0, times, 1e-13, 1e-13);
     std::vector<VectorX> run_absolute, exact_absolute;
     for (std::size_t k = 0; k < times.size(); ++k) {
-      run_absolute.push_back(validation::absolute_from_relative(q[k]));
+      run_absolute.push_back(samples::absolute_from_relative(q[k]));
       exact_absolute.push_back(exact[k].head(links));
     }
     return max_abs_difference(run_absolute, exact_absolute);

@@ -5,16 +5,19 @@
 #include <memory>
 #include <random>
 
-#include "bench/benchmark_models.hpp"
+#include "samples/bench_models.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 
 namespace heavesim::bench {
 namespace {
 
+using samples::BenchModel;
+using samples::BenchStates;
+
 struct Workload {
   explicit Workload(const BenchModel& bench)
-      : model(to_heavesim(bench)), data(model), states(random_states(model, 1024, 1)) {}
+      : model(samples::to_model(bench)), data(model), states(samples::bench_states(model, 1024, 1)) {}
   Model model;
   Data data;
   BenchStates states;
@@ -22,10 +25,10 @@ struct Workload {
 
 BenchModel model_for(int index) {
   switch (index) {
-    case 0: return double_pendulum();
-    case 1: return chain7();
-    case 2: return humanoid32();
-    default: return tree32_fixed();
+    case 0: return samples::bench_double_pendulum();
+    case 1: return samples::chain7();
+    case 2: return samples::humanoid32();
+    default: return samples::tree32_fixed();
   }
 }
 

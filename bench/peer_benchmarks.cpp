@@ -14,18 +14,22 @@
 #include <cstring>
 #include <random>
 
-#include "bench/benchmark_models.hpp"
+#include "bench/mjcf_writer.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 
 namespace heavesim::bench {
 namespace {
 
+using samples::BenchLink;
+using samples::BenchModel;
+using samples::BenchStates;
+
 BenchModel model_for(int index) {
   switch (index) {
-    case 0: return double_pendulum();
-    case 1: return chain7();
-    default: return humanoid32();
+    case 0: return samples::bench_double_pendulum();
+    case 1: return samples::chain7();
+    default: return samples::humanoid32();
   }
 }
 
@@ -89,11 +93,11 @@ dart::dynamics::SkeletonPtr to_dart(const BenchModel& bench) {
 void agreement_context() {
   for (int index : {0, 1}) {
     const BenchModel bench = model_for(index);
-    const Model model = to_heavesim(bench);
+    const Model model = samples::to_model(bench);
     Data data(model);
     MujocoModel mujoco(bench);
     auto dart = to_dart(bench);
-    const BenchStates states = random_states(model, 100, 2);
+    const BenchStates states = samples::bench_states(model, 100, 2);
     double mujoco_error = 0.0, dart_error = 0.0;
     for (std::size_t k = 0; k < states.q.size(); ++k) {
       const VectorX qdd = aba(model, data, states.q[k], states.v[k], states.tau[k]);
@@ -117,8 +121,8 @@ void agreement_context() {
 template <class Setup>
 void timed(benchmark::State& state, const std::string& what, Setup setup) {
   const BenchModel bench = model_for(static_cast<int>(state.range(0)));
-  const Model model = to_heavesim(bench);
-  const BenchStates states = random_states(model, 1024, 1);
+  const Model model = samples::to_model(bench);
+  const BenchStates states = samples::bench_states(model, 1024, 1);
   auto operation = setup(bench, model, states);
   state.SetLabel(bench.name + " (" + what + ")");
   std::size_t k = 0;

@@ -17,6 +17,7 @@
 #include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "tests/control/integration.hpp"
+#include "samples/oscillators.hpp"
 #include "validation/checks/prescribed_motion.hpp"
 
 namespace heavesim {
@@ -37,7 +38,7 @@ ActiveCompensatorParameters default_force_control() {
 /// A 290 t load held at mid-stroke (prescribed: it cannot move) under the compensator
 /// `p`, whose controlled height is set 0.5 m below the load: e = -0.5 m throughout.
 std::unique_ptr<validation::PrescribedMotionSystem> held_half_a_metre_high(ActiveCompensatorParameters p) {
-  auto model = validation::vertical_slider(290e3);
+  auto model = samples::vertical_slider(290e3);
   auto system = std::make_unique<validation::PrescribedMotionSystem>(model, [](double, VectorX& q, VectorX& v) {
     q[0] = 0.0;
     v[0] = 0.0;
@@ -80,7 +81,7 @@ TEST(Pid, ClosedLoopStepMatchesTheMatrixExponential) {
   // x(t) = x* + expm(A t) (x0 - x*) with x* = [0.1, 0, 0, 0]. (F/m, not F: the
   // matrix exponential loses digits when A's entries span 14 decades.)
   const double m = 290e3;
-  auto model = validation::vertical_slider(m, Vector3::Zero());
+  auto model = samples::vertical_slider(m, Vector3::Zero());
   ActiveCompensatorParameters p = default_force_control();
   p.force_actuator.max_force = 1e9;  // stays linear
   p.controlled_height = 0.1;
@@ -115,7 +116,7 @@ TEST(Pid, StrokeCentringMatchesTheMatrixExponential) {
   //   z' = v, v' = F/m, I' = r - (z - 0.5), tau F' = K_p (r - z + 0.5) + K_i I - K_d v - F,
   //   r' = -z / T_c;  x(t) = expm(A t) x0 (the constant 1 carries the offsets).
   const double m = 290e3, T_c = 30.0;
-  auto model = validation::vertical_slider(m, Vector3::Zero());
+  auto model = samples::vertical_slider(m, Vector3::Zero());
   ActiveCompensatorParameters p = default_force_control();
   p.force_actuator.max_force = 1e9;
   p.centring_time = T_c;
@@ -169,7 +170,7 @@ TEST(MotionReferenceUnit, SteadySinusoidMatchesTheTransferFunction) {
   // The base heaves a sin(w t); the MRU reports it through
   // H(s) = s^2 / (s^2 + 2 zeta w_c s + w_c^2) / (1 + tau s): after the filter
   // transient, heave = Im(a H(iw) e^{iwt}), rate and acceleration likewise with iw, -w^2.
-  auto model = validation::base_and_load(1e6, 3e5, Vector3::Zero());
+  auto model = samples::base_and_load(1e6, 3e5, Vector3::Zero());
   const double a = 1.3, w = 2 * M_PI / 10.0;
   validation::PrescribedMotionSystem system(model, [=](double t, VectorX& q, VectorX& v) {
     q << a * std::sin(w * t), 0.0;

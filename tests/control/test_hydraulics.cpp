@@ -11,6 +11,7 @@
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "tests/control/integration.hpp"
+#include "samples/oscillators.hpp"
 #include "validation/checks/prescribed_motion.hpp"
 
 namespace heavesim {
@@ -71,7 +72,7 @@ ActiveCompensatorParameters hydraulic_actuator() {
 TEST(HydraulicCylinder, PressureRatesSpoolAndForceAsWrittenByHand) {
   // base_and_load: the base heaves, the load strokes on it; the element's rates
   // against the equations of docs/physics/compensators.md §8-9 written out here.
-  auto model = validation::base_and_load(1e6, 3e5);
+  auto model = samples::base_and_load(1e6, 3e5);
   Data data(*model);
   VectorX q(2), v(2);
   q << 0.4, 1.2;
@@ -115,7 +116,7 @@ TEST(HydraulicCylinder, SteadyPressuresWhenExtendingThroughAnOpenValve) {
   // open; the stroke extends at 0.3 m/s. The pressures settle where the orifice flows
   // equal the displaced flows: K g(p_S - p_A) = A_A v and K g(p_B - p_T) = A_B v,
   // solved here by bisection on the orifice law written out.
-  auto model = validation::base_and_load(1e6, 3e5);
+  auto model = samples::base_and_load(1e6, 3e5);
   validation::PrescribedMotionSystem system(model, [](double t, VectorX& q, VectorX& v) {
     q << -0.4 * t, 0.3 * t;
     v << -0.4, 0.3;
@@ -149,7 +150,7 @@ TEST(HydraulicCylinder, BlockedCylinderOscillatesAtTheHydraulicNaturalFrequency)
   // Zero gains: the spool stays closed, the cylinder is a blocked oil spring. A mass
   // m released with speed v0 at s = 0 oscillates as s = (v0 / w_h) sin(w_h t).
   const double m = 2e4;
-  auto model = validation::vertical_slider(m, Vector3::Zero());
+  auto model = samples::vertical_slider(m, Vector3::Zero());
   ActiveCompensatorParameters p = hydraulic_actuator();
   p.hydraulic.cylinder.internal_leakage = p.hydraulic.cylinder.external_leakage = 0.0;
   const auto& c = p.hydraulic.cylinder;

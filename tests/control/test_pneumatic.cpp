@@ -12,6 +12,7 @@
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "tests/control/integration.hpp"
+#include "samples/oscillators.hpp"
 #include "validation/checks/prescribed_motion.hpp"
 
 namespace heavesim {
@@ -23,7 +24,7 @@ constexpr double pi = std::numbers::pi;
 
 /// The compensator on a vertical slider, placed at stroke s and rate v.
 struct Placed {
-  std::shared_ptr<const Model> model = validation::vertical_slider(290e3);
+  std::shared_ptr<const Model> model = samples::vertical_slider(290e3);
   Data data{*model};
   void at(double s, double v) {
     update_positions(*model, data, VectorX::Constant(1, s));
@@ -146,7 +147,7 @@ struct StrokeHistory {
   std::unique_ptr<Integrator> integrator;
   StrokeHistory(std::function<double(double)> stroke, std::function<double(double)> rate, PneumaticParameters p)
       : s(std::move(stroke)), v(std::move(rate)) {
-    auto model = validation::vertical_slider(290e3);
+    auto model = samples::vertical_slider(290e3);
     system = std::make_unique<PrescribedMotionSystem>(model, [this](double t, VectorX& q, VectorX& qd) {
       q[0] = s(t);
       qd[0] = v(t);

@@ -14,6 +14,7 @@ namespace heavesim {
 namespace {
 
 /// Base on a free joint, load on a prismatic joint along a tilted axis of the base.
+/// Built here, not in samples/: only this test needs a stroke on a tumbling base.
 std::shared_ptr<const Model> tumbling_base() {
   ModelBuilder builder;
   builder.add_body({"base", Inertia(5e4, Vector3(1, 0, 2), Vector3(4e5, 5e5, 6e5).asDiagonal().toDenseMatrix()),

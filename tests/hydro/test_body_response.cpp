@@ -23,37 +23,24 @@
 #include "hydro/radiation/added_mass.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/integrators/integrator.hpp"
-#include "kernel/model/model_builder.hpp"
 #include "kernel/system/multibody_system.hpp"
+#include "samples/floating_bodies.hpp"
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 
 namespace heavesim::hydro {
 namespace {
 
-constexpr double rho = 1025.0, g = 9.81, mass = 51979800.0;  // semisub.frc
+constexpr double rho = 1025.0, g = 9.81, mass = samples::mss_semisub_mass;  // semisub.frc
 
 const BemData& semisub() {
   static const BemData bem = bem::read_wamit(testing::source_path("data/mss_semisub/semisub"), {rho, g, 1.0});
   return bem;
 }
 
-/// The semi on a vertical slide; body frame origin = the BEM reference point on the
-/// mean free surface, CoG 0.5 m below it (semisub.frc).
+/// The semi on a vertical slide (samples/floating_bodies.hpp), with A(inf) from WAMIT.
 std::shared_ptr<const Model> heaving_semisub(const Matrix6& added_mass_wamit) {
-  ModelBuilder builder;
-  builder.set_gravity(Vector3(0, 0, -g));
-  BodyDefinition body{"semisub", Inertia(mass, Vector3(0, 0, -0.5), Vector3(5.66e10, 6.01e10, 7.31e10).asDiagonal()),
-                      added_inertia_in_body_frame(added_mass_wamit)};
-  builder.add_body(body);
-  JointDefinition joint;
-  joint.name = "heave";
-  joint.kind = JointKind::prismatic;
-  joint.axis = Vector3::UnitZ();
-  joint.parent = "ground";
-  joint.child = "semisub";
-  builder.add_joint(joint);
-  return std::make_shared<const Model>(builder.build());
+  return samples::heaving_mss_semisub(added_inertia_in_body_frame(added_mass_wamit));
 }
 
 /// Buoyancy (weight-balancing, so the mean free surface is the equilibrium) plus the
@@ -305,15 +292,8 @@ TEST(HydroBodyResponse, WaveExcitationSumsTheComponents) {
 // displacement, the reference-point velocity (world axes) and the load's moment
 // about the world origin, worked by hand.
 TEST(HydroBodyResponse, LinearLoadsActAtTheBodyReferencePoint) {
-  ModelBuilder builder;
-  builder.add_body({"hull", Inertia(1e5, Vector3::Zero(), Matrix3::Identity() * 1e6), std::nullopt});
-  JointDefinition joint;
-  joint.name = "float";
-  joint.kind = JointKind::free;
-  joint.parent = "ground";
-  joint.child = "hull";
-  builder.add_joint(joint);
-  const Model model = builder.build();
+  const auto hull = samples::free_floating_body("hull", Inertia(1e5, Vector3::Zero(), Matrix3::Identity() * 1e6));
+  const Model& model = *hull;
   Data data(model);
   const double yaw = 0.1;
   const Vector3 p(5.0, -2.0, 1.0);
@@ -394,18 +374,10 @@ TEST(HydroBodyResponse, ConvolutionElementMatchesStateSpaceElement) {
 // would mean a wrong moment or a lateral force from the clipping).
 TEST(HydroBodyResponse, FreeFloatingBoxHeavesAtTheHydrostaticPeriod) {
   const double L = 10.0, B = 8.0, H = 6.0, T = 3.0, m = rho * L * B * T;
-  ModelBuilder builder;
-  builder.set_gravity(Vector3(0, 0, -g));
-  builder.add_body({"box", Inertia(m, Vector3::Zero(), Vector3(m * (B * B + H * H) / 12, m * (L * L + H * H) / 12,
-                                                                 m * (L * L + B * B) / 12).asDiagonal()),
-                    std::nullopt});
-  JointDefinition joint;
-  joint.name = "float";
-  joint.kind = JointKind::free;
-  joint.parent = "ground";
-  joint.child = "box";
-  builder.add_joint(joint);
-  auto model = std::make_shared<const Model>(builder.build());
+  auto model = samples::free_floating_body(
+      "box", Inertia(m, Vector3::Zero(), Vector3(m * (B * B + H * H) / 12, m * (L * L + H * H) / 12,
+                                                 m * (L * L + B * B) / 12).asDiagonal()),
+      std::nullopt, Vector3(0, 0, -g));
   MultibodySystem system(model);
   system.add_force_element(std::make_unique<NonlinearHydrostatics>("buoyancy", model->link_index("box"),
                                                                    box_mesh(Vector3(L, B, H), Vector3::Zero(), 4), rho, g));

@@ -11,23 +11,16 @@
 #include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
 #include "hydro/waves/wave_spectrum.hpp"
-#include "kernel/model/model_builder.hpp"
 #include "kernel/system/multibody_system.hpp"
+#include "samples/floating_bodies.hpp"
 
 namespace heavesim::hydro {
 namespace {
 
 /// A 200 t hull "hull" on a free joint, with the given added inertia (link frame).
 std::shared_ptr<const Model> floating_hull(const std::optional<Matrix6>& added_inertia) {
-  ModelBuilder builder;
-  builder.add_body({"hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()), added_inertia});
-  JointDefinition joint;
-  joint.name = "float";
-  joint.kind = JointKind::free;
-  joint.parent = "ground";
-  joint.child = "hull";
-  builder.add_joint(joint);
-  return std::make_shared<const Model>(builder.build());
+  return samples::free_floating_body("hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()),
+                                     added_inertia);
 }
 
 TEST(NoMallocHydro, ForceElementsDoNotAllocate) {

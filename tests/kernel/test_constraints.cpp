@@ -9,7 +9,8 @@
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/projection.hpp"
 #include "kernel/model/model_builder.hpp"
-#include "validation/checks/random_models.hpp"
+#include "samples/loop_mechanisms.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -17,10 +18,10 @@ namespace {
 class Constraints : public ::testing::Test {
  protected:
   Constraints() {
-    validation::RandomTreeOptions options;
+    samples::RandomTreeOptions options;
     options.bodies = 10;
     options.constraints = true;
-    model = std::make_unique<Model>(validation::random_tree(random, options));
+    model = std::make_unique<Model>(samples::random_tree(random, options));
     data = std::make_unique<Data>(*model);
   }
   VectorX residual_at(const VectorX& q, double t = time) {
@@ -43,7 +44,7 @@ TEST_F(Constraints, EveryKindContributesItsRows) {
 
 TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
   for (int trial = 0; trial < 5; ++trial) {
-    const validation::RandomState state = validation::random_state(*model, random);
+    const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     MatrixX J(model->num_constraint_rows, model->nv);
     constraint_jacobian(*model, *data, J);
@@ -62,7 +63,7 @@ TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
 TEST_F(Constraints, BiasIsMinusTheSecondDerivativeAtZeroAcceleration) {
   // Along q(t) = q "+" v t (constant speeds: qdd = 0) Phi'' = dJ/dt v = -gamma.
   for (int trial = 0; trial < 5; ++trial) {
-    const validation::RandomState state = validation::random_state(*model, random);
+    const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     update_velocities(*model, *data, state.q, state.v);
     VectorX gamma(model->num_constraint_rows);
@@ -81,7 +82,7 @@ TEST_F(Constraints, BiasIsMinusTheSecondDerivativeAtZeroAcceleration) {
 TEST_F(Constraints, VelocityTargetIsMinusTheTimeDerivative) {
   // d/dt Phi(q(t), t) = J v - nu along q(t) = q "+" v t.
   for (int trial = 0; trial < 5; ++trial) {
-    const validation::RandomState state = validation::random_state(*model, random);
+    const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     MatrixX J(model->num_constraint_rows, model->nv);
     constraint_jacobian(*model, *data, J);
@@ -99,7 +100,7 @@ TEST_F(Constraints, VelocityTargetIsMinusTheTimeDerivative) {
 }
 
 TEST_F(Constraints, LoadsAreJacobianTransposeTimesMultipliers) {
-  const validation::RandomState state = validation::random_state(*model, random);
+  const samples::RandomState state = samples::random_state(*model, random);
   update_positions(*model, *data, state.q);
   MatrixX J(model->num_constraint_rows, model->nv);
   constraint_jacobian(*model, *data, J);
@@ -120,35 +121,7 @@ TEST(ConstraintRank, RedundantRowsOfAnOverconstrainedLoopAreNamed) {
   // Two parallel prismatic rods on the ground tied to one block by fixed loop joints:
   // the block is on rod a (fixed); the fixed joint to rod b repeats all but one of
   // rod a's constraints, so 5 of its 6 rows are redundant.
-  ModelBuilder builder;
-  for (const char* body : {"rod_a", "rod_b", "block"})
-    builder.add_body({body, Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  JointDefinition slide_a, slide_b, weld;
-  slide_a.name = "slide_a";
-  slide_a.kind = JointKind::prismatic;
-  slide_a.parent = "ground";
-  slide_a.child = "rod_a";
-  slide_a.X_parent_joint = Transform::from_translation(Vector3(-1, 0, 0));
-  slide_b = slide_a;
-  slide_b.name = "slide_b";
-  slide_b.child = "rod_b";
-  slide_b.X_parent_joint = Transform::from_translation(Vector3(1, 0, 0));
-  weld.name = "weld_a";
-  weld.kind = JointKind::fixed;
-  weld.parent = "rod_a";
-  weld.child = "block";
-  weld.X_child_joint = Transform::from_translation(Vector3(-1, 0, 0));
-  builder.add_joint(slide_a);
-  builder.add_joint(slide_b);
-  builder.add_joint(weld);
-  LoopJointDefinition tie;
-  tie.name = "weld_b";
-  tie.kind = JointKind::fixed;
-  tie.parent = "rod_b";
-  tie.child = "block";
-  tie.X_child_joint = Transform::from_translation(Vector3(1, 0, 0));
-  builder.add_loop_joint(tie);
-  const Model model = builder.build();
+  const Model model = samples::overconstrained_rails();
   Data data(model);
   update_positions(model, data, model.neutral_configuration());
   const ConstraintRank rank = analyse_constraint_rank(model, data);

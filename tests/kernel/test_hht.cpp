@@ -8,25 +8,16 @@
 #include <memory>
 
 #include "kernel/integrators/integrator.hpp"
-#include "kernel/model/model_builder.hpp"
 #include "kernel/system/multibody_system.hpp"
+#include "samples/loop_mechanisms.hpp"
+#include "samples/oscillators.hpp"
 
 namespace heavesim {
 namespace {
 
 /// A 1 kg block on a prismatic joint (no gravity) with a joint spring of stiffness k.
 std::shared_ptr<const Model> oscillator(double stiffness) {
-  ModelBuilder builder;
-  builder.set_gravity(Vector3::Zero());
-  builder.add_body({"block", Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  JointDefinition slide;
-  slide.name = "slide";
-  slide.kind = JointKind::prismatic;
-  slide.parent = "ground";
-  slide.child = "block";
-  slide.spring = JointSpringDamper{JointVector::Constant(1, stiffness), JointVector::Zero(1), JointVector::Zero(1)};
-  builder.add_joint(slide);
-  return std::make_shared<const Model>(builder.build());
+  return std::make_shared<const Model>(samples::prismatic_oscillator(1.0, stiffness));
 }
 
 std::unique_ptr<Integrator> hht(double step, double alpha, MultibodySystem& system) {
@@ -136,26 +127,7 @@ TEST(Hht, UnreachableConstraintStopsWithADiagnosis) {
   // A rod of 1 m hangs from a slider driven along x at 1 m/s; its tip is tied by a 1 m
   // distance constraint to a ground point at the origin. Beyond x = 2 m the loop cannot
   // close: the run must stop there with a NumericalError, never return NaN.
-  ModelBuilder builder;
-  builder.set_gravity(Vector3(0, 0, -9.81));
-  builder.add_body({"slider", Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  builder.add_body({"rod", Inertia(1.0, Vector3(0, 0, -0.5), Matrix3::Identity() * 0.1), std::nullopt});
-  JointDefinition rail, pin;
-  rail.name = "rail";
-  rail.kind = JointKind::prismatic;
-  rail.axis = Vector3::UnitX();
-  rail.parent = "ground";
-  rail.child = "slider";
-  pin.name = "pin";
-  pin.kind = JointKind::revolute;
-  pin.axis = Vector3::UnitY();
-  pin.parent = "slider";
-  pin.child = "rod";
-  builder.add_joint(rail);
-  builder.add_joint(pin);
-  builder.add_distance_constraint({"tether", "ground", "rod", Vector3::Zero(), Vector3(0, 0, -1), 1.0});
-  builder.add_driver({"push", "rail", 0, [](double t) { return DriverMotion{1.0 + t, 1.0, 0.0}; }});
-  auto model = std::make_shared<const Model>(builder.build());
+  auto model = samples::tethered_slider_pendulum();
   MultibodySystem system(model);
   // x = 1 with the rod turned by pi/6: its tip (x - sin q, 0, -cos q) is 1 m from the
   // origin; the tip's distance stays 1 while q' = x' (x - sin q) / (x cos q).

@@ -18,7 +18,8 @@
 #include "kernel/system/ggl_dae_form.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "kernel/system/ode_form.hpp"
-#include "validation/checks/random_models.hpp"
+#include "samples/loop_mechanisms.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -35,12 +36,12 @@ TEST(NoMalloc, AllocationCheckIsActive) {
 
 TEST(NoMalloc, KernelAlgorithmsDoNotAllocate) {
   std::mt19937_64 random(3);
-  validation::RandomTreeOptions options;
+  samples::RandomTreeOptions options;
   options.bodies = 21;  // all seven joint types, three times
   options.added_inertia = true;
-  const Model model = validation::random_tree(random, options);
+  const Model model = samples::random_tree(random, options);
   Data data(model);
-  const validation::RandomState state = validation::random_state(model, random);
+  const samples::RandomState state = samples::random_state(model, random);
   VectorX tau = state.tau;
   {
     ForbidAllocation forbid;
@@ -60,12 +61,12 @@ TEST(NoMalloc, KernelAlgorithmsDoNotAllocate) {
 
 TEST(NoMalloc, SystemDerivativeDoesNotAllocate) {
   std::mt19937_64 random(4);
-  auto model = std::make_shared<const Model>(validation::random_tree(random, validation::RandomTreeOptions{}));
+  auto model = std::make_shared<const Model>(samples::random_tree(random, samples::RandomTreeOptions{}));
   for (ForwardDynamicsMethod method : {ForwardDynamicsMethod::articulated_body, ForwardDynamicsMethod::composite_rigid_body}) {
     SystemSettings settings;
     settings.method = method;
     MultibodySystem system(model, settings);
-    const validation::RandomState state = validation::random_state(*model, random);
+    const samples::RandomState state = samples::random_state(*model, random);
     OdeForm ode(system);
     VectorX y = system.initial_state(state.q, state.v), ydot(system.size());
     ForbidAllocation forbid;
@@ -74,35 +75,9 @@ TEST(NoMalloc, SystemDerivativeDoesNotAllocate) {
   }
 }
 
-/// A parallelogram four-bar closed by a revolute loop joint, with a spring-damper.
-std::shared_ptr<const Model> parallelogram() {
-  ModelBuilder builder;
-  const Inertia rod(1.0, Vector3(0.5, 0, 0), Vector3(0, 1.0 / 12, 1.0 / 12).asDiagonal().toDenseMatrix());
-  for (const char* name : {"crank", "coupler", "rocker"}) builder.add_body({name, rod, std::nullopt});
-  auto revolute = [](std::string name, std::string parent, std::string child, const Vector3& at) {
-    JointDefinition joint;
-    joint.name = std::move(name);
-    joint.parent = std::move(parent);
-    joint.child = std::move(child);
-    joint.X_parent_joint = Transform::from_translation(at);
-    return joint;
-  };
-  builder.add_joint(revolute("pivot_a", "ground", "crank", Vector3::Zero()));
-  builder.add_joint(revolute("pin", "crank", "coupler", Vector3(1, 0, 0)));
-  builder.add_joint(revolute("pivot_b", "ground", "rocker", Vector3(0, 1, 0)));
-  LoopJointDefinition closure;
-  closure.name = "closure";
-  closure.parent = "coupler";
-  closure.child = "rocker";
-  closure.X_parent_joint = Transform::from_translation(Vector3(0, 1, 0));
-  closure.X_child_joint = Transform::from_translation(Vector3(1, 0, 0));
-  builder.add_loop_joint(closure);
-  return std::make_shared<const Model>(builder.build());
-}
-
-/// The parallelogram with a spring-damper strut, started on its loop and moving.
+/// The parallelogram four-bar with a spring-damper strut, started on its loop and moving.
 struct StrutFourBar {
-  StrutFourBar() : system(parallelogram()) {
+  StrutFourBar() : system(samples::parallelogram_four_bar()) {
     system.add_force_element(std::make_unique<SpringDamper>("strut", BodyPoint{0, Vector3(0, -1, 0)},
                                                             BodyPoint{1, Vector3(0.5, 0, 0)},
                                                             SpringDamperParameters{100.0, 5.0, 0.5}));

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "kernel/system/multibody_system.hpp"
-#include "validation/checks/prescribed_motion.hpp"
+#include "samples/oscillators.hpp"
 
 namespace heavesim {
 namespace {
@@ -15,7 +15,7 @@ constexpr unsigned kinematics = StageMarker::positions | StageMarker::velocities
 constexpr unsigned dynamics = kinematics | StageMarker::accelerations;
 
 TEST(StageMarker, EvaluateMarksItsStagesAndTime) {
-  MultibodySystem system(validation::vertical_slider(10.0));
+  MultibodySystem system(samples::vertical_slider(10.0));
   const VectorX y = system.initial_state(VectorX::Constant(1, 0.2), VectorX::Constant(1, 0.1));
   system.evaluate(0.5, y, false);
   const StageMarker& stages = system.data().stages;
@@ -26,7 +26,7 @@ TEST(StageMarker, EvaluateMarksItsStagesAndTime) {
 }
 
 TEST(StageMarker, AStaleReadIsDetected) {
-  MultibodySystem system(validation::vertical_slider(10.0));
+  MultibodySystem system(samples::vertical_slider(10.0));
   const VectorX y = system.initial_state(VectorX::Constant(1, 0.2), VectorX::Constant(1, 0.1));
   system.evaluate(0.5, y, false);
   const long evaluation = system.data().stages.evaluation;

@@ -16,6 +16,7 @@
 #include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/integrators/integrator.hpp"
+#include "samples/oscillators.hpp"
 #include "validation/checks/prescribed_motion.hpp"
 #include "validation/checks/validation_suite.hpp"
 #include "validation/oracles/polytropic_gas.hpp"
@@ -31,7 +32,7 @@ double stroke_rate(double t) { return 2.5 * 0.7 * std::cos(0.7 * t) + 0.8 * 1.9 
 
 /// Largest |W - W_ref| / max |W_ref| over 60 s of the stroke history.
 double prescribed_history_error(const IntegratorSettings& settings, bool gas_state) {
-  auto model = vertical_slider(290e3);
+  auto model = samples::vertical_slider(290e3);
   PrescribedMotionSystem system(model, [](double t, VectorX& q, VectorX& v) {
     q[0] = stroke(t);
     v[0] = stroke_rate(t);

@@ -19,7 +19,7 @@
 #include "hydro/radiation/added_mass.hpp"
 #include "hydro/waves/wave_spectrum.hpp"
 #include "kernel/integrators/integrator.hpp"
-#include "kernel/model/model_builder.hpp"
+#include "samples/floating_bodies.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 #include "validation/checks/validation_suite.hpp"
 
@@ -27,7 +27,7 @@ namespace heavesim::validation {
 namespace {
 
 using namespace heavesim::hydro;
-constexpr double rho = 1025.0, g = 9.81, semisub_mass = 51979800.0;  // semisub.frc
+constexpr double rho = 1025.0, g = 9.81, semisub_mass = samples::mss_semisub_mass;  // semisub.frc
 
 double relative(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
 
@@ -42,17 +42,7 @@ const BemData& semisub() {
 }
 
 std::shared_ptr<const Model> heaving_semisub(const Matrix6& added_mass_wamit) {
-  ModelBuilder builder;
-  builder.set_gravity(Vector3(0, 0, -g));
-  builder.add_body({"semisub", Inertia(semisub_mass, Vector3(0, 0, -0.5), Vector3(5.66e10, 6.01e10, 7.31e10).asDiagonal()),
-                    added_inertia_in_body_frame(added_mass_wamit)});
-  JointDefinition joint;
-  joint.name = "heave";
-  joint.kind = JointKind::prismatic;
-  joint.parent = "ground";
-  joint.child = "semisub";
-  builder.add_joint(joint);
-  return std::make_shared<const Model>(builder.build());
+  return samples::heaving_mss_semisub(added_inertia_in_body_frame(added_mass_wamit));
 }
 
 void add_hydrostatics_and_damping(MultibodySystem& system, double damping_33) {

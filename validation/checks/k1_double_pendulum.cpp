@@ -4,7 +4,8 @@
 
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "validation/checks/planar_models.hpp"
+#include "samples/planar_chains.hpp"
+#include "validation/checks/relative_error.hpp"
 #include "validation/checks/validation_suite.hpp"
 #include "validation/oracles/double_pendulum_closed_form.hpp"
 
@@ -13,7 +14,7 @@ namespace heavesim::validation {
 std::vector<ValidationRow> check_k1_double_pendulum() {
   // Deliberately unequal links so that no term hides behind a symmetry.
   const oracle::DoublePendulumParameters p{1.3, 0.7, 1.1, 0.45, 0.6, 0.11, 0.05, 9.81};
-  const Model model = planar_chain_model({{p.L1, p.m1, p.a1, p.I1}, {1.0, p.m2, p.a2, p.I2}}, p.g);
+  const Model model = samples::planar_chain({{p.L1, p.m1, p.a1, p.I1}, {1.0, p.m2, p.a2, p.I2}}, p.g);
   Data data(model);
   std::mt19937_64 random(20261122);
   std::uniform_real_distribution<double> angle(-M_PI, M_PI), rate(-6.0, 6.0), torque(-20.0, 20.0);

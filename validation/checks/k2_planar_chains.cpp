@@ -6,17 +6,29 @@
 
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "validation/checks/planar_models.hpp"
+#include "samples/planar_chains.hpp"
+#include "validation/checks/relative_error.hpp"
 #include "validation/checks/validation_suite.hpp"
+#include "validation/oracles/planar_chain_oracle.hpp"
 
 namespace heavesim::validation {
+namespace {
+
+/// The oracle's link data as the sample library's (the same four numbers).
+std::vector<samples::PlanarLink> sample_links(const std::vector<oracle::PlanarLink>& links) {
+  std::vector<samples::PlanarLink> converted;
+  for (const oracle::PlanarLink& link : links) converted.push_back({link.length, link.mass, link.com, link.inertia});
+  return converted;
+}
+
+}  // namespace
 
 std::vector<ValidationRow> check_k2_planar_chains() {
   std::vector<ValidationRow> rows;
   for (int n : {2, 3, 5}) {
     const std::vector<oracle::PlanarLink> rods = oracle::unit_rods(n);
     const oracle::PlanarChainOracle reference(rods);
-    const Model model = planar_chain_model(rods);
+    const Model model = samples::planar_chain(sample_links(rods));
     Data data(model);
     std::mt19937_64 random(1000 + n);
     std::uniform_real_distribution<double> angle(-M_PI, M_PI), rate(-5.0, 5.0), torque(-10.0, 10.0);
@@ -28,14 +40,14 @@ std::vector<ValidationRow> check_k2_planar_chains() {
         qd[i] = rate(random);
         tau[i] = torque(random);
       }
-      const VectorX theta = absolute_from_relative(q), theta_dot = absolute_from_relative(qd);
+      const VectorX theta = samples::absolute_from_relative(q), theta_dot = samples::absolute_from_relative(qd);
       const VectorX theta_ddot = reference.accelerations(theta, theta_dot, tau);
       const Eigen::Matrix2Xd pin_force = reference.pin_forces(theta, theta_dot, theta_ddot);
 
       update_positions(model, data, q);
       update_velocities(model, data, q, qd);
       const VectorX qdd = articulated_body_forward_dynamics(model, data, tau);
-      qdd_error = std::max(qdd_error, relative_error(absolute_from_relative(qdd), theta_ddot));
+      qdd_error = std::max(qdd_error, relative_error(samples::absolute_from_relative(qdd), theta_ddot));
       compute_joint_wrenches(model, data);
       for (int i = 0; i < n; ++i) {
         const Vector3 force = joint_reaction(model, data, i + 1).force_world;

@@ -7,8 +7,9 @@
 
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "validation/checks/planar_models.hpp"
+#include "samples/planar_chains.hpp"
 #include "validation/checks/validation_suite.hpp"
+#include "validation/oracles/planar_chain_oracle.hpp"
 #include "validation/oracles/reference_integrator.hpp"
 
 namespace heavesim::validation {
@@ -49,7 +50,7 @@ RunErrors compare_run(const PendulumRun& run) {
 
   // Oracle run from the same initial state, in absolute angles.
   VectorX y0(2 * n);
-  y0 << absolute_from_relative(q_samples.front()), absolute_from_relative(qd_samples.front());
+  y0 << samples::absolute_from_relative(q_samples.front()), samples::absolute_from_relative(qd_samples.front());
   const oracle::Rhs rhs = [&](double, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
     ydot.head(n) = y.tail(n);
     ydot.tail(n) = reference.accelerations(y.head(n), y.tail(n), VectorX::Zero(n));
@@ -63,12 +64,12 @@ RunErrors compare_run(const PendulumRun& run) {
     errors.energy_drift = std::max(errors.energy_drift, std::abs(energy_samples[k] - energy_samples.front()) / energy_scale);
     if (times[k] > run.compare_until + 1e-12) continue;
     const VectorX theta = exact[k].head(n), theta_dot = exact[k].tail(n);
-    errors.angle = std::max(errors.angle, (absolute_from_relative(q_samples[k]) - theta).cwiseAbs().maxCoeff());
+    errors.angle = std::max(errors.angle, (samples::absolute_from_relative(q_samples[k]) - theta).cwiseAbs().maxCoeff());
     const Eigen::Matrix2Xd pin = reference.pin_forces(theta, theta_dot, reference.accelerations(theta, theta_dot, VectorX::Zero(n)));
     for (int i = 0; i < n; ++i)
       errors.reaction = std::max(errors.reaction, (reaction_samples[k].col(i) - Vector3(pin(0, i), 0.0, pin(1, i))).norm());
     errors.times.push_back(times[k]);
-    errors.first_angle.push_back(absolute_from_relative(q_samples[k])[0]);
+    errors.first_angle.push_back(samples::absolute_from_relative(q_samples[k])[0]);
     errors.first_rate.push_back(qd_samples[k][0]);
   }
   return errors;

@@ -9,7 +9,7 @@
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
-#include "validation/checks/random_models.hpp"
+#include "samples/random_models.hpp"
 #include "validation/checks/validation_suite.hpp"
 
 namespace heavesim::validation {
@@ -45,12 +45,12 @@ std::vector<ValidationRow> check_k6_algorithm_cross_checks() {
   std::mt19937_64 random(6);
   for (int trial = 0; trial < 50; ++trial) {
     for (bool added : {false, true}) {
-      RandomTreeOptions options;
+      samples::RandomTreeOptions options;
       options.bodies = 14;
       options.added_inertia = added;
-      const Model model = random_tree(random, options);
+      const Model model = samples::random_tree(random, options);
       Data data(model);
-      RandomState state = random_state(model, random);
+      samples::RandomState state = samples::random_state(model, random);
       add_joint_element_forces(model, state.q, state.v, state.tau);
 
       // CRBA vs RNEA columns.

@@ -1,7 +1,6 @@
 #include "validation/checks/prescribed_motion.hpp"
 
 #include "kernel/algorithms/kinematics.hpp"
-#include "kernel/model/model_builder.hpp"
 
 namespace heavesim::validation {
 
@@ -45,42 +44,6 @@ void PrescribedMotionSystem::derivative(double t, const VectorX& y, VectorX& ydo
   double power = forces_.joint_force.dot(v_);
   for (int i = 1; i < model_->num_links(); ++i) power += dot(data_.velocity_world[i], forces_.external_force_world[i]);
   ydot[size_] = power;
-}
-
-namespace {
-
-JointDefinition vertical_prismatic(std::string name, std::string parent, std::string child) {
-  JointDefinition joint;
-  joint.name = std::move(name);
-  joint.kind = JointKind::prismatic;
-  joint.axis = Vector3::UnitZ();
-  joint.parent = std::move(parent);
-  joint.child = std::move(child);
-  return joint;
-}
-
-BodyDefinition point_body(std::string name, double mass) {
-  return {std::move(name), Inertia(mass, Vector3::Zero(), Matrix3::Identity() * mass), std::nullopt};
-}
-
-}  // namespace
-
-std::shared_ptr<const Model> vertical_slider(double mass, const Vector3& gravity) {
-  ModelBuilder builder;
-  builder.set_gravity(gravity);
-  builder.add_body(point_body("load", mass));
-  builder.add_joint(vertical_prismatic("stroke", ModelBuilder::ground_name, "load"));
-  return std::make_shared<const Model>(builder.build());
-}
-
-std::shared_ptr<const Model> base_and_load(double base_mass, double load_mass, const Vector3& gravity) {
-  ModelBuilder builder;
-  builder.set_gravity(gravity);
-  builder.add_body(point_body("base", base_mass));
-  builder.add_body(point_body("load", load_mass));
-  builder.add_joint(vertical_prismatic("heave", ModelBuilder::ground_name, "base"));
-  builder.add_joint(vertical_prismatic("stroke", "base", "load"));
-  return std::make_shared<const Model>(builder.build());
 }
 
 }  // namespace heavesim::validation

@@ -4,7 +4,8 @@
 // and the work W(t) = integral of the elements' power sum_i v_i . f_i + v . tau.
 // The kernel's integrators advance it like any OdeSystem. This is how validation
 // drives a compensator through a stroke history without dynamics (C3), and how tests
-// drive a sensor with a platform motion.
+// drive a sensor with a platform motion. The stroke models it moves are
+// samples::vertical_slider and samples::base_and_load (samples/oscillators.hpp).
 #include <functional>
 #include <memory>
 #include <vector>
@@ -44,14 +45,5 @@ class PrescribedMotionSystem : public OdeSystem {
   std::vector<int> offsets_;
   int size_ = 0;
 };
-
-/// One body ("load", mass [kg], no rotational inertia needed) on a prismatic joint
-/// "stroke" along world z from the ground: q = stroke [m].
-std::shared_ptr<const Model> vertical_slider(double mass, const Vector3& gravity = Vector3(0, 0, -9.81));
-
-/// A base body ("base") on a vertical prismatic joint "heave" from the ground, and a
-/// load ("load") on a vertical prismatic joint "stroke" from the base: q = [heave, stroke].
-std::shared_ptr<const Model> base_and_load(double base_mass, double load_mass,
-                                           const Vector3& gravity = Vector3(0, 0, -9.81));
 
 }  // namespace heavesim::validation

@@ -7,7 +7,7 @@
 
 #include "kernel/algorithms/generalized_force.hpp"
 #include "kernel/algorithms/kinematics.hpp"
-#include "validation/checks/random_models.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -15,11 +15,11 @@ namespace {
 TEST(GeneralizedAppliedForce, EqualsTheJacobianTransposeSum) {
   std::mt19937_64 random(21);
   for (int trial = 0; trial < 6; ++trial) {
-    validation::RandomTreeOptions options;
+    samples::RandomTreeOptions options;
     options.bodies = 8;
-    const Model model = validation::random_tree(random, options);
+    const Model model = samples::random_tree(random, options);
     Data data(model);
-    const validation::RandomState state = validation::random_state(model, random);
+    const samples::RandomState state = samples::random_state(model, random);
     update_positions(model, data, state.q);
 
     AlignedVector<Force> subtree_forces(model.num_links(), Force::Zero());

@@ -1,14 +1,14 @@
-#include "validation/checks/planar_models.hpp"
+#include "samples/planar_chains.hpp"
 
 #include "kernel/model/model_builder.hpp"
 
-namespace heavesim::validation {
+namespace heavesim::samples {
 
-Model planar_chain_model(const std::vector<oracle::PlanarLink>& links, double gravity) {
+Model planar_chain(const std::vector<PlanarLink>& links, double gravity) {
   ModelBuilder builder;
   builder.set_gravity(Vector3(0.0, 0.0, -gravity));
   for (std::size_t i = 0; i < links.size(); ++i) {
-    const oracle::PlanarLink& link = links[i];
+    const PlanarLink& link = links[i];
     // Slender rod about its CoM: I about the two transverse axes, (almost) nothing axially.
     const Matrix3 inertia = Eigen::Vector3d(link.inertia, link.inertia, 0.0).asDiagonal();
     builder.add_body({"link" + std::to_string(i + 1), Inertia(link.mass, Vector3(0.0, 0.0, -link.com), inertia),
@@ -25,6 +25,21 @@ Model planar_chain_model(const std::vector<oracle::PlanarLink>& links, double gr
   return builder.build();
 }
 
+Model pendulum(double mass, double com_distance, double inertia_about_com) {
+  ModelBuilder builder;
+  builder.add_body({"rod",
+                    Inertia(mass, Vector3(0, 0, -com_distance),
+                            Vector3(inertia_about_com, inertia_about_com, 0.0).asDiagonal()),
+                    std::nullopt});
+  JointDefinition pin;
+  pin.name = "pin";
+  pin.axis = Vector3::UnitY();
+  pin.parent = "ground";
+  pin.child = "rod";
+  builder.add_joint(pin);
+  return builder.build();
+}
+
 VectorX relative_from_absolute(const VectorX& theta) {
   VectorX q = theta;
   for (Eigen::Index i = 1; i < theta.size(); ++i) q[i] = theta[i] - theta[i - 1];
@@ -37,8 +52,4 @@ VectorX absolute_from_relative(const VectorX& q) {
   return theta;
 }
 
-double relative_error(const VectorX& a, const VectorX& b, double floor) {
-  return (a - b).norm() / std::max(b.norm(), floor);
-}
-
-}  // namespace heavesim::validation
+}  // namespace heavesim::samples

@@ -6,7 +6,7 @@
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/inverse_dynamics_derivatives.hpp"
-#include "validation/checks/random_models.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -14,12 +14,12 @@ namespace {
 TEST(InverseDynamicsDerivatives, MatchFiniteDifferencesOfRnea) {
   std::mt19937_64 random(11);
   for (int trial = 0; trial < 10; ++trial) {
-    validation::RandomTreeOptions options;
+    samples::RandomTreeOptions options;
     options.bodies = 10;
     options.added_inertia = trial % 2 == 1;
-    const Model model = validation::random_tree(random, options);
+    const Model model = samples::random_tree(random, options);
     Data data(model);
-    const validation::RandomState state = validation::random_state(model, random);
+    const samples::RandomState state = samples::random_state(model, random);
     const VectorX qdd = state.tau;  // any acceleration will do
 
     inverse_dynamics_derivatives(model, data, state.q, state.v, qdd, state.external_forces);
@@ -50,9 +50,9 @@ TEST(InverseDynamicsDerivatives, VelocityDerivativeOfAQuadraticFormIsExact) {
   // tau is quadratic in v, so dtau/dv(v) = (tau(v + e) - tau(v - e)) / 2 for any e:
   // a check that needs no small step.
   std::mt19937_64 random(12);
-  const Model model = validation::random_tree(random, validation::RandomTreeOptions{});
+  const Model model = samples::random_tree(random, samples::RandomTreeOptions{});
   Data data(model);
-  const validation::RandomState state = validation::random_state(model, random);
+  const samples::RandomState state = samples::random_state(model, random);
   inverse_dynamics_derivatives(model, data, state.q, state.v, state.tau);
   const MatrixX analytic = data.dtau_dv;
   for (int j = 0; j < model.nv; ++j) {

@@ -1,11 +1,11 @@
-#include "validation/checks/random_models.hpp"
+#include "samples/random_models.hpp"
 
 #include <cmath>
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/model/model_builder.hpp"
 
-namespace heavesim::validation {
+namespace heavesim::samples {
 namespace {
 
 double uniform(std::mt19937_64& random, double low, double high) {
@@ -117,4 +117,4 @@ RandomState random_state(const Model& model, std::mt19937_64& random) {
   return state;
 }
 
-}  // namespace heavesim::validation
+}  // namespace heavesim::samples

@@ -1,16 +1,13 @@
-#include "bench/benchmark_models.hpp"
+#include "samples/bench_models.hpp"
 
-#include <fmt/format.h>
-
-#include <functional>
 #include <random>
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/model/model_builder.hpp"
 
-namespace heavesim::bench {
+namespace heavesim::samples {
 
-BenchModel double_pendulum() {
+BenchModel bench_double_pendulum() {
   BenchModel model{"double_pendulum", {}};
   for (int i = 0; i < 2; ++i) {
     BenchLink link;
@@ -72,7 +69,7 @@ BenchModel chain7() {
 BenchModel humanoid32() { return limbs_on(true); }
 BenchModel tree32_fixed() { return limbs_on(false); }
 
-Model to_heavesim(const BenchModel& bench) {
+Model to_model(const BenchModel& bench) {
   ModelBuilder builder;
   for (std::size_t i = 0; i < bench.links.size(); ++i) {
     const BenchLink& link = bench.links[i];
@@ -90,7 +87,7 @@ Model to_heavesim(const BenchModel& bench) {
   return builder.build();
 }
 
-BenchStates random_states(const Model& model, int count, unsigned seed) {
+BenchStates bench_states(const Model& model, int count, unsigned seed) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   auto draw = [&](int size) { return VectorX(VectorX::NullaryExpr(size, [&](Eigen::Index) { return uniform(random); })); };
@@ -106,26 +103,4 @@ BenchStates random_states(const Model& model, int count, unsigned seed) {
   return states;
 }
 
-std::string to_mjcf(const BenchModel& bench) {
-  std::vector<std::vector<int>> children(bench.links.size());
-  std::vector<int> roots;
-  for (std::size_t i = 0; i < bench.links.size(); ++i)
-    (bench.links[i].parent < 0 ? roots : children[bench.links[i].parent]).push_back(static_cast<int>(i));
-  std::function<std::string(int)> body = [&](int i) {
-    const BenchLink& link = bench.links[i];
-    std::string text = fmt::format("<body name=\"link{}\" pos=\"{} {} {}\">", i, link.offset.x(), link.offset.y(),
-                                   link.offset.z());
-    text += link.free ? "<freejoint/>"
-                      : fmt::format("<joint type=\"hinge\" axis=\"{} {} {}\"/>", link.axis.x(), link.axis.y(),
-                                    link.axis.z());
-    text += fmt::format("<inertial pos=\"{} {} {}\" mass=\"{}\" diaginertia=\"{} {} {}\"/>", link.com.x(),
-                        link.com.y(), link.com.z(), link.mass, link.inertia.x(), link.inertia.y(), link.inertia.z());
-    for (int child : children[i]) text += body(child);
-    return text + "</body>";
-  };
-  std::string xml = "<mujoco model=\"" + bench.name + "\"><option gravity=\"0 0 -9.81\"/><worldbody>";
-  for (int root : roots) xml += body(root);
-  return xml + "</worldbody></mujoco>";
-}
-
-}  // namespace heavesim::bench
+}  // namespace heavesim::samples

@@ -1,0 +1,37 @@
+#include "samples/floating_bodies.hpp"
+
+#include "kernel/model/model_builder.hpp"
+
+namespace heavesim::samples {
+
+std::shared_ptr<const Model> free_floating_body(const std::string& body_name, const Inertia& inertia,
+                                                const std::optional<Matrix6>& added_inertia, const Vector3& gravity) {
+  ModelBuilder builder;
+  builder.set_gravity(gravity);
+  builder.add_body({body_name, inertia, added_inertia});
+  JointDefinition joint;
+  joint.name = "float";
+  joint.kind = JointKind::free;
+  joint.parent = "ground";
+  joint.child = body_name;
+  builder.add_joint(joint);
+  return std::make_shared<const Model>(builder.build());
+}
+
+std::shared_ptr<const Model> heaving_mss_semisub(const Matrix6& added_inertia) {
+  ModelBuilder builder;
+  builder.set_gravity(Vector3(0, 0, -9.81));
+  builder.add_body({"semisub",
+                    Inertia(mss_semisub_mass, Vector3(0, 0, -0.5), Vector3(5.66e10, 6.01e10, 7.31e10).asDiagonal()),
+                    added_inertia});
+  JointDefinition joint;
+  joint.name = "heave";
+  joint.kind = JointKind::prismatic;
+  joint.axis = Vector3::UnitZ();
+  joint.parent = "ground";
+  joint.child = "semisub";
+  builder.add_joint(joint);
+  return std::make_shared<const Model>(builder.build());
+}
+
+}  // namespace heavesim::samples
