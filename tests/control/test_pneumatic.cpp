@@ -78,7 +78,7 @@ TEST(Pneumatic, GasEnergyClosesTheEnergyBalanceOfAnUndampedRun) {
   // A 290 t load on the gas spring with no piping loss, friction or stops and one
   // exponent (no heat exchange) is conservative: kinetic + gravity potential + the
   // compensator's stored energy stays constant to the integrator's tolerance.
-  auto model = validation::vertical_slider(290e3);
+  auto model = samples::vertical_slider(290e3);
   MultibodySystem system(model);
   PneumaticParameters p;
   p.gas_pressure = 290e3 * 9.81 / p.piston_area + p.atmospheric_pressure;  // balanced at mid-stroke
