@@ -155,10 +155,12 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
     hydro::RadiationMemorySettings& memory = def.memory;
-    if (auto kind = item.optional("memory")) memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
+    if (auto kind = item.optional("memory"))
+      memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
     // The order's range and the kernel's sampling are hydro's rules (state_space.hpp,
     // retardation_kernel.hpp), checked when the scene builds the element.
-    if (auto order = item.optional("state_space_order")) memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
+    if (auto order = item.optional("state_space_order"))
+      memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
     if (auto duration = item.optional("kernel_duration")) memory.kernel_duration = duration->positive_number();
     if (auto step = item.optional("kernel_step")) memory.kernel_step = step->positive_number();
     if (auto modes = item.optional("modes")) {
@@ -207,7 +209,8 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     item.expect_section("quadratic_damping");
     def.type = HydroForceDefinition::Type::quadratic_damping;
     def.quadratic_coefficients = read_vector6(item["coefficients"]);
-    if ((def.quadratic_coefficients.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+    if ((def.quadratic_coefficients.array() < 0.0).any())
+      item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
     // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.
