@@ -303,7 +303,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
     const std::string type = item["type"].choice({"distance", "coupler"});
     const std::string name = read_unique_name(item, names);
     if (type == "distance") {
-      item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "distance", "description"});
+      item.expect_section("distance");
       DistanceConstraintDefinition def;
       def.name = name;
       def.body_a = item["body_a"].text();
@@ -313,7 +313,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       def.distance = item["distance"].positive_number();
       definition.distance_constraints.push_back(std::move(def));
     } else {
-      item.expect_map({"name", "type", "joint_a", "joint_b", "ratio", "offset", "description"});
+      item.expect_section("coupler");
       CouplerDefinition def;
       def.name = name;
       def.joint_a = item["joint_a"].text();

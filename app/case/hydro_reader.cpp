@@ -177,8 +177,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (item.has("file") == item.has("heave_estimate"))
       item.fail("exactly one of 'file' (a WAMIT .3, BEMIO .h5 or Capytaine .nc file) and 'heave_estimate' (the semi-submersible hand estimate)");
     if (auto estimate = item.optional("heave_estimate")) {
-      estimate->expect_map({"pontoon_bottom_area", "waterplane_area", "keel_depth", "pontoon_top_depth",
-                            "added_mass", "added_mass_depth"});
+      estimate->expect_section("heave_estimate");
       hydro::SemisubmersibleHeaveEstimate e;
       e.pontoon_bottom_area = (*estimate)["pontoon_bottom_area"].positive_number();
       e.waterplane_area = (*estimate)["waterplane_area"].positive_number();
