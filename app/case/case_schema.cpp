@@ -351,12 +351,83 @@ constexpr KeySpec heave_estimate_keys[] = {
     {"added_mass_depth", "number", "m", "required", "d_a"},
 };
 
+constexpr KeySpec frame_keys[] = {
+    {"position", "vector", "m", "`[0, 0, 0]`", "origin of the frame in its body frame"},
+    {"orientation", "map", "–", "identity", "see Orientations"},
+};
+
+constexpr KeySpec orientation_keys[] = {
+    {"axis", "vector", "–", "one of four forms", "unit rotation axis (with `angle`)"},
+    {"angle", "number", "rad", "with `axis`", "rotation angle"},
+    {"rpy", "vector", "rad", "one of four forms", "[roll, pitch, yaw]: R = Rz(yaw) Ry(pitch) Rx(roll)"},
+    {"quaternion", "vector", "–", "one of four forms", "unit quaternion [w, x, y, z]"},
+    {"matrix", "list", "–", "one of four forms", "rotation matrix, 3 rows"},
+};
+
+constexpr KeySpec inertia_keys[] = {
+    {"ixx", "number", "kg·m²", "required", "tensor entry (0, 0)"},
+    {"iyy", "number", "kg·m²", "required", "tensor entry (1, 1)"},
+    {"izz", "number", "kg·m²", "required", "tensor entry (2, 2)"},
+    {"ixy", "number", "kg·m²", "0", "tensor entry (0, 1)"},
+    {"ixz", "number", "kg·m²", "0", "tensor entry (0, 2)"},
+    {"iyz", "number", "kg·m²", "0", "tensor entry (1, 2)"},
+};
+
+constexpr KeySpec initial_keys[] = {
+    {"q", "number or list", "m, rad or quaternion", "neutral", "raw joint coordinates"},
+    {"qd", "number or list", "m/s or rad/s", "0", "raw joint speeds"},
+    {"position", "vector", "m", "`[0, 0, 0]`", "free: origin of the child-side frame", "free"},
+    {"orientation", "map", "–", "identity", "free, spherical: see Orientations", "free spherical"},
+    {"angular_velocity", "vector", "rad/s", "`[0, 0, 0]`", "free, spherical: parent-side axes", "free spherical"},
+    {"velocity", "vector", "m/s", "`[0, 0, 0]`", "free: parent-side axes", "free"},
+};
+
+constexpr KeySpec spring_keys[] = {
+    {"stiffness", "number or list", "N/m or N·m/rad", "0", "k per coordinate (≥ 0)"},
+    {"damping", "number or list", "N·s/m or N·m·s/rad", "0", "c per coordinate (≥ 0)"},
+    {"rest", "number, list or orientation", "m or rad", "neutral", "q_rest (spherical: an orientation)"},
+};
+
+constexpr KeySpec limits_keys[] = {
+    {"lower", "number", "m or rad", "none", "lower stop"},
+    {"upper", "number", "m or rad", "none", "upper stop (> lower)"},
+    {"stiffness", "number", "N/m or N·m/rad", "required", "stop stiffness (> 0)"},
+    {"damping", "number", "N·s/m or N·m·s/rad", "0", "stop damping (≥ 0)"},
+};
+
+constexpr KeySpec body_point_keys[] = {
+    {"body", "text", "–", "required", "body name or `ground`"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "point in the body frame"},
+};
+
+constexpr KeySpec polytropic_exponent_keys[] = {
+    {"compression", "number", "–", "required", "n_c, 1 ≤ n ≤ 5/3"},
+    {"expansion", "number", "–", "required", "n_e, 1 ≤ n ≤ 5/3"},
+};
+
+constexpr KeySpec stroke_range_keys[] = {
+    {"lower", "number", "m", "required", "lower end of the cylinder stroke"},
+    {"upper", "number", "m", "required", "upper end (> lower)"},
+};
+
+constexpr KeySpec ramp_keys[] = {
+    {"kind", "choice", "–", "required", "`cosine`, `tanh` or `none`"},
+    {"duration", "number", "s", "required unless `kind: none`", "t_r (> 0)"},
+};
+
 constexpr SchemaSection sections[] = {
     {"top-level", root_keys},
     {"environment", environment_keys},
     {"waves", waves_keys},
+    {"ramp", ramp_keys},
     {"bodies[i]", body_keys},
+    {"inertia", inertia_keys},
     {"joints[i]", joint_keys},
+    {"frame", frame_keys},
+    {"initial", initial_keys},
+    {"spring", spring_keys},
+    {"limits", limits_keys},
+    {"orientation", orientation_keys},
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
@@ -372,13 +443,16 @@ constexpr SchemaSection sections[] = {
     {"mooring", mooring_keys},
     {"heave_estimate", heave_estimate_keys},
     {"stroke", stroke_keys},
+    {"body_point", body_point_keys},
     {"pneumatic_compensator", pneumatic_keys},
+    {"polytropic_exponent", polytropic_exponent_keys},
     {"end_stops", end_stops_keys},
     {"seal_friction", seal_friction_keys},
     {"cooling", cooling_keys},
     {"piping", piping_keys},
     {"active_compensator", active_keys},
     {"actuator", actuator_keys},
+    {"stroke_range", stroke_range_keys},
     {"valve", valve_keys},
     {"controller", controller_keys},
     {"measurement", measurement_keys},

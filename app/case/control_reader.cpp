@@ -32,7 +32,7 @@ double absolute_pressure(const NodeReader& node, double atmospheric, const std::
 
 /// {body, point} -> body name and point [m].
 std::pair<std::string, Vector3> read_body_point(const NodeReader& reader) {
-  reader.expect_map({"body", "point"});
+  reader.expect_section("body_point");
   return {reader["body"].text(), reader.optional("point") ? reader["point"].vector3() : Vector3::Zero()};
 }
 
@@ -99,7 +99,7 @@ void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
       return n;
     };
     if (exponent->node().is_map()) {
-      exponent->expect_map({"compression", "expansion"});
+      exponent->expect_section("polytropic_exponent");
       p.exponent_compression = read_exponent((*exponent)["compression"]);
       p.exponent_expansion = read_exponent((*exponent)["expansion"]);
     } else {
@@ -179,7 +179,7 @@ void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& de
   }
   // Both chambers keep a volume over the cylinder's stroke.
   if (auto range = reader.optional("stroke_range")) {
-    range->expect_map({"lower", "upper"});
+    range->expect_section("stroke_range");
     def.cylinder_lower = (*range)["lower"].number();
     def.cylinder_upper = (*range)["upper"].number();
     if (!(def.cylinder_lower < def.cylinder_upper))

@@ -20,7 +20,7 @@ hydro::Ramp read_ramp(const NodeReader& reader) {
     ramp.duration = reader.non_negative_number();
     return ramp;
   }
-  reader.expect_map({"kind", "duration"});
+  reader.expect_section("ramp");
   const std::string kind = reader["kind"].choice({"cosine", "tanh", "none"});
   ramp.kind = kind == "cosine" ? hydro::RampKind::cosine
               : kind == "tanh" ? hydro::RampKind::hyperbolic_tangent
