@@ -208,8 +208,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     item.expect_section("quadratic_damping");
     def.type = HydroForceDefinition::Type::quadratic_damping;
     def.quadratic_coefficients = read_vector6(item["coefficients"]);
-    if ((def.quadratic_coefficients.array() < 0.0).any())
-      item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
+    if ((def.quadratic_coefficients.array() < 0.0).any()) item["coefficients"].fail("a negative coefficient", "coefficients >= 0");
   } else if (type == "added_mass") {
     // Constant added mass (e.g. the fallback A of offshore-model.md sec. 3.3) put into the
     // body's inertia like a radiation element's A(inf); no force of its own.

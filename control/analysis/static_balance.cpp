@@ -1,8 +1,8 @@
 #include "control/analysis/static_balance.hpp"
 
-#include <fmt/format.h>
-
 #include <cmath>
+
+#include <fmt/format.h>
 
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
@@ -16,8 +16,7 @@ VectorX generalized_force(const Model& model, const Data& data, const AppliedFor
     const Joint& joint = model.joints[i];
     Force subtree = Force::Zero();
     for (int j = i; j < model.links[i].subtree_end; ++j) subtree += forces.external_force_world[j];
-    for (int c = 0; c < joint.nv; ++c)
-      Q[joint.v_index + c] += dot(data.motion_subspace_world.col(joint.v_index + c), subtree);
+    for (int c = 0; c < joint.nv; ++c) Q[joint.v_index + c] += dot(data.motion_subspace_world.col(joint.v_index + c), subtree);
   }
   return Q;
 }
@@ -28,8 +27,8 @@ VectorX unit_stroke_generalized_force(const StrokeAxis& axis, const Model& model
   return generalized_force(model, data, unit_force);
 }
 
-double static_stroke_load(const Model& model, Data& data, const MultibodySystem& system, double t0, const VectorX& q0,
-                          const VectorX& unit) {
+double static_stroke_load(const Model& model, Data& data, const MultibodySystem& system, double t0,
+                          const VectorX& q0, const VectorX& unit) {
   const VectorX zero = VectorX::Zero(model.nv);
   VectorX needed = rnea(model, data, q0, zero, zero);  // = -(generalized gravity) at rest
   AppliedForces others(model);

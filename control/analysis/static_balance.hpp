@@ -21,8 +21,8 @@ VectorX unit_stroke_generalized_force(const StrokeAxis& axis, const Model& model
 /// needed = RNEA(q0, 0, 0) - Q_elements (the generalized force that holds q0), the
 /// least-squares load along `unit` (the stroke's unit generalized force) is
 /// unit . needed / |unit|^2; for a joint-form stroke exactly that coordinate's load.
-double static_stroke_load(const Model& model, Data& data, const MultibodySystem& system, double t0, const VectorX& q0,
-                          const VectorX& unit);
+double static_stroke_load(const Model& model, Data& data, const MultibodySystem& system, double t0,
+                          const VectorX& q0, const VectorX& unit);
 
 /// Mass [kg] seen along the stroke with every other coordinate held:
 /// m = Q^T M Q / |Q|^4 for the stroke's unit generalized force Q and the mass matrix M
