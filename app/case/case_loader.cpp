@@ -23,7 +23,7 @@ namespace {
 /// orientation: {axis: [..], angle: ..} | {rpy: [roll, pitch, yaw]} | {quaternion: [w, x, y, z]}
 ///              | {matrix: [[..], [..], [..]]}; R maps the frame's axes to its parent's.
 Matrix3 read_orientation(const NodeReader& reader) {
-  reader.expect_map({"axis", "angle", "rpy", "quaternion", "matrix"});
+  reader.expect_section("orientation");
   const int forms = reader.has("axis") + reader.has("rpy") + reader.has("quaternion") + reader.has("matrix");
   if (forms != 1)
     reader.fail("exactly one of {axis, angle}, {rpy}, {quaternion}, {matrix}");
@@ -60,7 +60,7 @@ Matrix3 read_orientation(const NodeReader& reader) {
 /// frame: {position: [x, y, z], orientation: {...}}; identity when absent.
 Transform read_frame(const std::optional<NodeReader>& reader) {
   if (!reader) return Transform::Identity();
-  reader->expect_map({"position", "orientation"});
+  reader->expect_section("frame");
   Transform frame;
   if (auto position = reader->optional("position")) frame.translation() = position->vector3();
   if (auto orientation = reader->optional("orientation")) frame.rotation() = read_orientation(*orientation);
@@ -72,7 +72,7 @@ Transform read_frame(const std::optional<NodeReader>& reader) {
 Matrix3 read_inertia(const NodeReader& reader) {
   double ixx, iyy, izz, ixy = 0.0, ixz = 0.0, iyz = 0.0;
   if (reader.node().is_map()) {
-    reader.expect_map({"ixx", "iyy", "izz", "ixy", "ixz", "iyz"});
+    reader.expect_section("inertia");
     ixx = reader["ixx"].number();
     iyy = reader["iyy"].number();
     izz = reader["izz"].number();
@@ -185,11 +185,11 @@ JointInitialState read_initial_state(const std::optional<NodeReader>& reader, co
   const bool free = std::holds_alternative<FreeJoint>(type);
   if (nv == 0) reader->fail("an initial state for a fixed joint", "no 'initial' (a fixed joint has no coordinates)");
   if (free)
-    reader->expect_map({"q", "qd", "position", "orientation", "angular_velocity", "velocity"});
+    reader->expect_section("initial", "free");
   else if (spherical)
-    reader->expect_map({"q", "qd", "orientation", "angular_velocity"});
+    reader->expect_section("initial", "spherical");
   else
-    reader->expect_map({"q", "qd"});
+    reader->expect_section("initial");
 
   if (auto q = reader->optional("q")) state.q = read_configuration(*q, type);
   if (auto qd = reader->optional("qd")) state.v = read_joint_vector(*qd, nv);
@@ -214,7 +214,7 @@ JointInitialState read_initial_state(const std::optional<NodeReader>& reader, co
 }
 
 JointSpringDamper read_spring(const NodeReader& reader, const JointType& type, const std::string& type_name) {
-  reader.expect_map({"stiffness", "damping", "rest"});
+  reader.expect_section("spring");
   const int nq = joint_nq(type), nv = joint_nv(type);
   if (std::holds_alternative<FreeJoint>(type) || nv == 0)
     reader.fail("a spring on a " + type_name + " joint", "springs on revolute, prismatic, cylindrical, universal "
@@ -236,7 +236,7 @@ JointSpringDamper read_spring(const NodeReader& reader, const JointType& type, c
 }
 
 JointLimits read_limits(const NodeReader& reader, const JointType& type, const std::string& type_name) {
-  reader.expect_map({"lower", "upper", "stiffness", "damping"});
+  reader.expect_section("limits");
   if (joint_nv(type) != 1 || !joint_has_scalar_coordinates(type))
     reader.fail("limits on a " + type_name + " joint", "limits on revolute or prismatic joints only");
   JointLimits limits;
@@ -303,7 +303,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
     const std::string type = item["type"].choice({"distance", "coupler"});
     const std::string name = read_unique_name(item, names);
     if (type == "distance") {
-      item.expect_map({"name", "type", "body_a", "point_a", "body_b", "point_b", "distance", "description"});
+      item.expect_section("distance");
       DistanceConstraintDefinition def;
       def.name = name;
       def.body_a = item["body_a"].text();
@@ -313,7 +313,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       def.distance = item["distance"].positive_number();
       definition.distance_constraints.push_back(std::move(def));
     } else {
-      item.expect_map({"name", "type", "joint_a", "joint_b", "ratio", "offset", "description"});
+      item.expect_section("coupler");
       CouplerDefinition def;
       def.name = name;
       def.joint_a = item["joint_a"].text();

@@ -272,12 +272,164 @@ constexpr KeySpec output_keys[] = {
     {"evaluate_after", "number", "s", "t_start + duration/2", "start of the summary window"},
 };
 
+constexpr KeySpec distance_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`distance`"},
+    {"body_a", "text", "–", "required", "first body (`ground` allowed)"},
+    {"point_a", "vector", "m", "`[0, 0, 0]`", "point on body a, its frame"},
+    {"body_b", "text", "–", "required", "second body"},
+    {"point_b", "vector", "m", "`[0, 0, 0]`", "point on body b, its frame"},
+    {"distance", "number", "m", "required", "> 0, kept between the points (a massless rod with ball ends)"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec coupler_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`coupler`"},
+    {"joint_a", "text", "–", "required", "a revolute or prismatic joint of the tree"},
+    {"joint_b", "text", "–", "required", "another one"},
+    {"ratio", "number", "–", "1", "q_a = ratio q_b + offset"},
+    {"offset", "number", "rad or m", "0", "offset"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec stroke_keys[] = {
+    {"joint", "text", "–", "one of joint, base and moving", "joint form: a prismatic joint"},
+    {"base", "map", "–", "one of joint, base and moving", "bodies form: `{body, point}` of the base"},
+    {"moving", "map", "–", "required with base", "bodies form: `{body, point}` of the moving side"},
+    {"axis", "vector", "–", "`[0, 0, 1]`", "bodies form: unit axis, base body frame"},
+    {"mid_stroke", "number", "m", "0", "q or axial distance at s = 0"},
+};
+
+constexpr KeySpec end_stops_keys[] = {
+    {"lower", "number", "m", "none", "stroke of the lower stop"},
+    {"upper", "number", "m", "none", "stroke of the upper stop (> lower)"},
+    {"stiffness", "number", "N/m", "1e8", "stop stiffness (> 0)"},
+    {"damping", "number", "N·s/m", "1e6", "stop damping (≥ 0)"},
+};
+
+constexpr KeySpec seal_friction_keys[] = {
+    {"coulomb", "number", "N", "0", "F_c"},
+    {"viscous", "number", "N·s/m", "0", "c_v"},
+    {"smoothing_speed", "number", "m/s", "0.01", "v_s"},
+};
+
+constexpr KeySpec cooling_keys[] = {
+    {"time_constant", "number", "s", "required", "τ of Newton cooling"},
+    {"wall_temperature", "number", "K", "`initial_temperature`", "T_wall"},
+};
+
+constexpr KeySpec piping_keys[] = {
+    {"length", "number", "m", "required", "L"},
+    {"bore", "number", "m", "required", "d"},
+    {"viscosity", "number", "Pa·s", "0.05", "μ"},
+    {"density", "number", "kg/m³", "870", "ρ of the oil"},
+    {"loss_coefficient", "number", "–", "0", "ζ of the fittings"},
+};
+
+constexpr KeySpec valve_keys[] = {
+    {"rated_flow", "number", "m³/s", "required", "Q_N at full opening and the rated drop"},
+    {"rated_pressure_drop", "number", "Pa", "3.5e6", "Δp_N per land"},
+    {"natural_frequency", "number", "rad/s", "2π·30", "ω_v of the spool"},
+    {"damping", "number", "–", "0.7", "ζ_v of the spool"},
+    {"transition_pressure", "number", "Pa", "1e5", "laminar region of the orifice law"},
+    {"underlap", "number", "–", "0", "opening of every land at null, 0 ≤ x_u < 1"},
+};
+
+constexpr KeySpec mru_keys[] = {
+    {"corner_period", "number", "s", "100", "T_c of the high-pass filter"},
+    {"damping", "number", "–", "0.7071", "ζ of the filter"},
+    {"lag", "number", "s", "0.01", "τ of the output lag"},
+};
+
+constexpr KeySpec heave_estimate_keys[] = {
+    {"pontoon_bottom_area", "number", "m²", "required", "A_pb"},
+    {"waterplane_area", "number", "m²", "required", "A_wp ≤ A_pb"},
+    {"keel_depth", "number", "m", "required", "d_keel"},
+    {"pontoon_top_depth", "number", "m", "required", "d_top < d_keel"},
+    {"added_mass", "number", "kg", "required", "A33"},
+    {"added_mass_depth", "number", "m", "required", "d_a"},
+};
+
+constexpr KeySpec frame_keys[] = {
+    {"position", "vector", "m", "`[0, 0, 0]`", "origin of the frame in its body frame"},
+    {"orientation", "map", "–", "identity", "see Orientations"},
+};
+
+constexpr KeySpec orientation_keys[] = {
+    {"axis", "vector", "–", "one of four forms", "unit rotation axis (with `angle`)"},
+    {"angle", "number", "rad", "with `axis`", "rotation angle"},
+    {"rpy", "vector", "rad", "one of four forms", "[roll, pitch, yaw]: R = Rz(yaw) Ry(pitch) Rx(roll)"},
+    {"quaternion", "vector", "–", "one of four forms", "unit quaternion [w, x, y, z]"},
+    {"matrix", "list", "–", "one of four forms", "rotation matrix, 3 rows"},
+};
+
+constexpr KeySpec inertia_keys[] = {
+    {"ixx", "number", "kg·m²", "required", "tensor entry (0, 0)"},
+    {"iyy", "number", "kg·m²", "required", "tensor entry (1, 1)"},
+    {"izz", "number", "kg·m²", "required", "tensor entry (2, 2)"},
+    {"ixy", "number", "kg·m²", "0", "tensor entry (0, 1)"},
+    {"ixz", "number", "kg·m²", "0", "tensor entry (0, 2)"},
+    {"iyz", "number", "kg·m²", "0", "tensor entry (1, 2)"},
+};
+
+constexpr KeySpec initial_keys[] = {
+    {"q", "number or list", "m, rad or quaternion", "neutral", "raw joint coordinates"},
+    {"qd", "number or list", "m/s or rad/s", "0", "raw joint speeds"},
+    {"position", "vector", "m", "`[0, 0, 0]`", "free: origin of the child-side frame", "free"},
+    {"orientation", "map", "–", "identity", "free, spherical: see Orientations", "free spherical"},
+    {"angular_velocity", "vector", "rad/s", "`[0, 0, 0]`", "free, spherical: parent-side axes", "free spherical"},
+    {"velocity", "vector", "m/s", "`[0, 0, 0]`", "free: parent-side axes", "free"},
+};
+
+constexpr KeySpec spring_keys[] = {
+    {"stiffness", "number or list", "N/m or N·m/rad", "0", "k per coordinate (≥ 0)"},
+    {"damping", "number or list", "N·s/m or N·m·s/rad", "0", "c per coordinate (≥ 0)"},
+    {"rest", "number, list or orientation", "m or rad", "neutral", "q_rest (spherical: an orientation)"},
+};
+
+constexpr KeySpec limits_keys[] = {
+    {"lower", "number", "m or rad", "none", "lower stop"},
+    {"upper", "number", "m or rad", "none", "upper stop (> lower)"},
+    {"stiffness", "number", "N/m or N·m/rad", "required", "stop stiffness (> 0)"},
+    {"damping", "number", "N·s/m or N·m·s/rad", "0", "stop damping (≥ 0)"},
+};
+
+constexpr KeySpec body_point_keys[] = {
+    {"body", "text", "–", "required", "body name or `ground`"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "point in the body frame"},
+};
+
+constexpr KeySpec polytropic_exponent_keys[] = {
+    {"compression", "number", "–", "required", "n_c, 1 ≤ n ≤ 5/3"},
+    {"expansion", "number", "–", "required", "n_e, 1 ≤ n ≤ 5/3"},
+};
+
+constexpr KeySpec stroke_range_keys[] = {
+    {"lower", "number", "m", "required", "lower end of the cylinder stroke"},
+    {"upper", "number", "m", "required", "upper end (> lower)"},
+};
+
+constexpr KeySpec ramp_keys[] = {
+    {"kind", "choice", "–", "required", "`cosine`, `tanh` or `none`"},
+    {"duration", "number", "s", "required unless `kind: none`", "t_r (> 0)"},
+};
+
 constexpr SchemaSection sections[] = {
     {"top-level", root_keys},
     {"environment", environment_keys},
     {"waves", waves_keys},
+    {"ramp", ramp_keys},
     {"bodies[i]", body_keys},
+    {"inertia", inertia_keys},
     {"joints[i]", joint_keys},
+    {"frame", frame_keys},
+    {"initial", initial_keys},
+    {"spring", spring_keys},
+    {"limits", limits_keys},
+    {"orientation", orientation_keys},
+    {"distance", distance_keys},
+    {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
     {"spring_damper", spring_damper_keys},
     {"point_force", point_force_keys},
@@ -289,11 +441,22 @@ constexpr SchemaSection sections[] = {
     {"quadratic_damping", quadratic_damping_keys},
     {"added_mass", added_mass_keys},
     {"mooring", mooring_keys},
+    {"heave_estimate", heave_estimate_keys},
+    {"stroke", stroke_keys},
+    {"body_point", body_point_keys},
     {"pneumatic_compensator", pneumatic_keys},
+    {"polytropic_exponent", polytropic_exponent_keys},
+    {"end_stops", end_stops_keys},
+    {"seal_friction", seal_friction_keys},
+    {"cooling", cooling_keys},
+    {"piping", piping_keys},
     {"active_compensator", active_keys},
     {"actuator", actuator_keys},
+    {"stroke_range", stroke_range_keys},
+    {"valve", valve_keys},
     {"controller", controller_keys},
     {"measurement", measurement_keys},
+    {"mru", mru_keys},
     {"solver", solver_keys},
     {"output", output_keys},
 };

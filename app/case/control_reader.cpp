@@ -32,12 +32,12 @@ double absolute_pressure(const NodeReader& node, double atmospheric, const std::
 
 /// {body, point} -> body name and point [m].
 std::pair<std::string, Vector3> read_body_point(const NodeReader& reader) {
-  reader.expect_map({"body", "point"});
+  reader.expect_section("body_point");
   return {reader["body"].text(), reader.optional("point") ? reader["point"].vector3() : Vector3::Zero()};
 }
 
 StrokeDefinition read_stroke(const NodeReader& reader) {
-  reader.expect_map({"joint", "base", "moving", "axis", "mid_stroke"});
+  reader.expect_section("stroke");
   StrokeDefinition stroke;
   stroke.mid_stroke = reader.number_or("mid_stroke", 0.0);
   if (reader.has("joint")) {
@@ -57,7 +57,7 @@ StrokeDefinition read_stroke(const NodeReader& reader) {
 }
 
 EndStops read_end_stops(const NodeReader& reader) {
-  reader.expect_map({"lower", "upper", "stiffness", "damping"});
+  reader.expect_section("end_stops");
   EndStops stops;
   stops.lower = reader.number_or("lower", stops.lower);
   stops.upper = reader.number_or("upper", stops.upper);
@@ -70,7 +70,7 @@ EndStops read_end_stops(const NodeReader& reader) {
 }
 
 SealFriction read_friction(const NodeReader& reader) {
-  reader.expect_map({"coulomb", "viscous", "smoothing_speed"});
+  reader.expect_section("seal_friction");
   return {non_negative_or(reader, "coulomb", 0.0), non_negative_or(reader, "viscous", 0.0),
           positive_or(reader, "smoothing_speed", 0.01)};
 }
@@ -99,7 +99,7 @@ void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
       return n;
     };
     if (exponent->node().is_map()) {
-      exponent->expect_map({"compression", "expansion"});
+      exponent->expect_section("polytropic_exponent");
       p.exponent_compression = read_exponent((*exponent)["compression"]);
       p.exponent_expansion = read_exponent((*exponent)["expansion"]);
     } else {
@@ -109,7 +109,7 @@ void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
   p.hysteresis_speed = positive_or(item, "hysteresis_speed", p.hysteresis_speed);
   p.initial_temperature = positive_or(item, "initial_temperature", p.initial_temperature);
   if (auto cooling = item.optional("cooling")) {
-    cooling->expect_map({"time_constant", "wall_temperature"});
+    cooling->expect_section("cooling");
     p.cooling = GasCooling{(*cooling)["time_constant"].positive_number(),
                            positive_or(*cooling, "wall_temperature", p.initial_temperature)};
   }
@@ -119,7 +119,7 @@ void read_pneumatic(const NodeReader& item, CompensatorDefinition& def) {
         "a cooling time constant as well: the net work of every compression-expansion cycle stays in the gas as "
         "heat, and without cooling the mean pressure creeps up cycle after cycle");
   if (auto piping = item.optional("piping")) {
-    piping->expect_map({"length", "bore", "viscosity", "density", "loss_coefficient"});
+    piping->expect_section("piping");
     p.piping = piping_loss_from_pipe((*piping)["length"].positive_number(), (*piping)["bore"].positive_number(),
                                      non_negative_or(*piping, "viscosity", 0.05), positive_or(*piping, "density", 870.0),
                                      non_negative_or(*piping, "loss_coefficient", 0.0));
@@ -179,7 +179,7 @@ void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& de
   }
   // Both chambers keep a volume over the cylinder's stroke.
   if (auto range = reader.optional("stroke_range")) {
-    range->expect_map({"lower", "upper"});
+    range->expect_section("stroke_range");
     def.cylinder_lower = (*range)["lower"].number();
     def.cylinder_upper = (*range)["upper"].number();
     if (!(def.cylinder_lower < def.cylinder_upper))
@@ -198,8 +198,7 @@ void read_hydraulic_actuator(const NodeReader& reader, CompensatorDefinition& de
                             "volume_b - annulus_area x upper > 0");
   ServoValveParameters& v = h.valve;
   const NodeReader valve = reader["valve"];
-  valve.expect_map(
-      {"rated_flow", "rated_pressure_drop", "natural_frequency", "damping", "transition_pressure", "underlap"});
+  valve.expect_section("valve");
   v.rated_flow = valve["rated_flow"].positive_number();
   v.rated_pressure_drop = positive_or(valve, "rated_pressure_drop", v.rated_pressure_drop);
   v.natural_frequency = positive_or(valve, "natural_frequency", v.natural_frequency);
@@ -240,7 +239,7 @@ void read_active(const NodeReader& item, CompensatorDefinition& def) {
       def.controlled_point = position;
     }
     if (auto mru = measurement->optional("mru")) {
-      mru->expect_map({"corner_period", "damping", "lag"});
+      mru->expect_section("mru");
       p.mru = MruParameters{};
       p.mru->corner_period = positive_or(*mru, "corner_period", p.mru->corner_period);
       p.mru->damping = positive_or(*mru, "damping", p.mru->damping);

@@ -20,7 +20,7 @@ hydro::Ramp read_ramp(const NodeReader& reader) {
     ramp.duration = reader.non_negative_number();
     return ramp;
   }
-  reader.expect_map({"kind", "duration"});
+  reader.expect_section("ramp");
   const std::string kind = reader["kind"].choice({"cosine", "tanh", "none"});
   ramp.kind = kind == "cosine" ? hydro::RampKind::cosine
               : kind == "tanh" ? hydro::RampKind::hyperbolic_tangent
@@ -155,10 +155,12 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     def.type = HydroForceDefinition::Type::radiation;
     def.file_key = "file";
     hydro::RadiationMemorySettings& memory = def.memory;
-    if (auto kind = item.optional("memory")) memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
+    if (auto kind = item.optional("memory"))
+      memory.convolution = kind->choice({"state_space", "convolution"}) == "convolution";
     // The order's range and the kernel's sampling are hydro's rules (state_space.hpp,
     // retardation_kernel.hpp), checked when the scene builds the element.
-    if (auto order = item.optional("state_space_order")) memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
+    if (auto order = item.optional("state_space_order"))
+      memory.state_space_order = static_cast<int>(std::clamp<long>(order->integer(), INT_MIN, INT_MAX));
     if (auto duration = item.optional("kernel_duration")) memory.kernel_duration = duration->positive_number();
     if (auto step = item.optional("kernel_step")) memory.kernel_step = step->positive_number();
     if (auto modes = item.optional("modes")) {
@@ -175,8 +177,7 @@ void read_hydro_force(const NodeReader& item, const std::string& type, const std
     if (item.has("file") == item.has("heave_estimate"))
       item.fail("exactly one of 'file' (a WAMIT .3, BEMIO .h5 or Capytaine .nc file) and 'heave_estimate' (the semi-submersible hand estimate)");
     if (auto estimate = item.optional("heave_estimate")) {
-      estimate->expect_map({"pontoon_bottom_area", "waterplane_area", "keel_depth", "pontoon_top_depth",
-                            "added_mass", "added_mass_depth"});
+      estimate->expect_section("heave_estimate");
       hydro::SemisubmersibleHeaveEstimate e;
       e.pontoon_bottom_area = (*estimate)["pontoon_bottom_area"].positive_number();
       e.waterplane_area = (*estimate)["waterplane_area"].positive_number();

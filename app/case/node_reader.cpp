@@ -52,10 +52,6 @@ void NodeReader::fail(const std::string& found, const std::string& expected) con
   throw InputError(node_->location, path_, found, expected);
 }
 
-void NodeReader::expect_map(std::initializer_list<std::string_view> allowed) const {
-  expect_keys(std::vector<std::string_view>(allowed));
-}
-
 void NodeReader::expect_section(std::string_view section, std::string_view form) const {
   expect_keys(accepted_keys(section, form));
 }

@@ -26,9 +26,8 @@ class NodeReader {
   const SourceLocation& location() const { return node_->location; }
 
   // --- maps ---
-  /// Requires a map whose keys are all in `allowed` (unknown keys: did-you-mean).
-  void expect_map(std::initializer_list<std::string_view> allowed) const;
-  /// The same with the keys of a schema section (app/case/case_schema.hpp) of one form.
+  /// Requires a map whose keys are all keys of `form` of the schema section `section`
+  /// (app/case/case_schema.hpp); an unknown key is an error with a did-you-mean.
   void expect_section(std::string_view section, std::string_view form = {}) const;
   bool has(const std::string& key) const;
   /// A required entry.

@@ -148,7 +148,8 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
       switch (force.type) {
         case Type::hydrostatics:
           if (force.nonlinear) {
-            element = std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
+            element =
+                std::make_unique<hydro::NonlinearHydrostatics>(force.name, link, data.meshes.at(force.name), rho, g);
           } else {
             const BodyDefinition& body = *find_body(definition, force.body);  // the model has it
             hydro::LinearHydrostaticsSettings settings;
@@ -173,7 +174,8 @@ void add_hydro_elements(const CaseDefinition& definition, const HydroData& data,
           element = std::make_unique<hydro::BodyDamping>(force.name, link, force.damping);
           break;
         case Type::quadratic_damping:
-          element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(), force.quadratic_coefficients);
+          element = std::make_unique<hydro::BodyDamping>(force.name, link, hydro::Matrix6::Zero(),
+                                                         force.quadratic_coefficients);
           break;
         case Type::added_mass:
           continue;  // in the body's inertia (read_hydro_data)

@@ -1,8 +1,8 @@
 #include "hydro/elements/element_factories.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "hydro/elements/radiation_convolution.hpp"
 #include "hydro/elements/radiation_memory.hpp"
@@ -16,7 +16,8 @@ std::vector<std::pair<int, int>> realised_mode_pairs(const RetardationKernel& ke
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < 6; ++i)
     for (int j = 0; j < 6; ++j)
-      if (modes[i] && modes[j] && largest(i, j) > 0.0 && largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
+      if (modes[i] && modes[j] && largest(i, j) > 0.0 &&
+          largest(i, j) > 1e-3 * std::sqrt(largest(i, i) * largest(j, j)))
         pairs.emplace_back(i, j);
   return pairs;
 }
@@ -30,7 +31,8 @@ void keep_modes(RetardationKernel& kernel, const ModeSet& modes) {
 
 std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, const ModeSet& modes, int order) {
   std::vector<ModePairStateSpace> systems;
-  for (const auto& [i, j] : realised_mode_pairs(kernel, modes)) systems.push_back(realize_kernel_entry(kernel, i, j, order));
+  for (const auto& [i, j] : realised_mode_pairs(kernel, modes))
+    systems.push_back(realize_kernel_entry(kernel, i, j, order));
   for (const ModePairStateSpace& realised : systems)
     if (!realised.stable)
       throw ParameterError("state_space_order",

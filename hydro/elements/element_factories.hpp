@@ -59,11 +59,11 @@ struct LinearHydrostaticsSettings {
   /// gravitational part is taken out because the kernel applies the weight at the CoM
   /// itself (wamit_gravitational_stiffness).
   bool stiffness_includes_gravity = false;
-  std::optional<double> displaced_volume;  // V [m^3]; default: buoyancy = the body's weight
-  double body_mass = 0.0;                  // m [kg]
+  std::optional<double> displaced_volume;    // V [m^3]; default: buoyancy = the body's weight
+  double body_mass = 0.0;                    // m [kg]
   Vector3 center_of_mass = Vector3::Zero();  // m, body frame
-  double water_density = 1025.0;           // rho [kg/m^3]
-  double gravity = 9.81;                   // g [m/s^2]
+  double water_density = 1025.0;             // rho [kg/m^3]
+  double gravity = 9.81;                     // g [m/s^2]
 };
 
 /// The restoring matrix the element uses: C, less the gravitational part when C has it.

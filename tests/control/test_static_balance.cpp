@@ -23,8 +23,8 @@ std::shared_ptr<const Model> platform_and_load() {
   builder.set_gravity(Vector3(0.0, 0.0, -g));
   builder.add_body({"platform", Inertia(platform_mass, Vector3::Zero(), Matrix3::Identity() * 1e8), std::nullopt});
   builder.add_body({"load", Inertia(load_mass, Vector3(0.3, 0.0, 1.0), Matrix3::Identity() * 1e6), std::nullopt});
-  for (const auto& [name, parent, child] : {std::tuple{"heave", ModelBuilder::ground_name, "platform"},
-                                            std::tuple{"stroke", "platform", "load"}}) {
+  for (const auto& [name, parent, child] :
+       {std::tuple{"heave", ModelBuilder::ground_name, "platform"}, std::tuple{"stroke", "platform", "load"}}) {
     JointDefinition joint;
     joint.name = name;
     joint.kind = JointKind::prismatic;
@@ -62,7 +62,8 @@ TEST(StaticBalance, StaticLoadIsTheCarriedWeightLessTheOtherLoads) {
   const VectorX unit = unit_stroke_generalized_force(rig.axis, *rig.model, rig.data);
   EXPECT_NEAR(static_stroke_load(*rig.model, rig.data, system, 0.0, rig.q0, unit), load_mass * g, 1e-6);
   // An upward 1e5 N on the load carries part of it.
-  system.add_force_element(std::make_unique<PointForce>("lift", BodyPoint::on_body(*rig.model, "load", Vector3::Zero()), Vector3(0, 0, 1e5)));
+  const BodyPoint load_origin = BodyPoint::on_body(*rig.model, "load", Vector3::Zero());
+  system.add_force_element(std::make_unique<PointForce>("lift", load_origin, Vector3(0, 0, 1e5)));
   EXPECT_NEAR(static_stroke_load(*rig.model, rig.data, system, 0.0, rig.q0, unit), load_mass * g - 1e5, 1e-6);
 }
 
