@@ -149,6 +149,7 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   define_constraint_channels(output);
   if (output.forces) define_element_channels();
 
+  records_energy_ = output.energy;
   if (output.energy) {
     // The energies of the sample, computed once per record().
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
@@ -238,19 +239,26 @@ void Recorder::record(double t, const VectorX& y) {
                     element_values_[e]);
   }
   compensators_.observe(t, y);
-  // T + V with V = gravity + joint springs + what the force elements store; summed left
-  // to right so that a scene whose elements store nothing gives the same digits as T + V_g + V_j.
-  double element_energy = 0.0;
-  for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
-    const ForceElement& element = *system.force_elements()[e];
-    element_energy +=
-        element.potential_energy(system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()));
+  if (records_energy_) {
+    // T + V with V = gravity + joint springs + what the force elements store; summed left
+    // to right so that a scene whose elements store nothing gives the same digits as T + V_g + V_j.
+    double element_energy = 0.0;
+    for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
+      const ForceElement& element = *system.force_elements()[e];
+      element_energy += element.potential_energy(system.model(), system.data(),
+                                                 y.segment(system.state_offset(e), element.state_size()));
+    }
+    const double gravity = gravity_potential_energy(system.model(), system.data());
+    const double joint_springs = joint_elastic_energy(system.model(), system.configuration());
+    energy_.kinetic = kinetic_energy(system.model(), system.data());
+    energy_.potential = gravity + joint_springs + element_energy;
+    energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
   }
-  const double gravity = gravity_potential_energy(system.model(), system.data());
-  const double joint_springs = joint_elastic_energy(system.model(), system.configuration());
-  energy_.kinetic = kinetic_energy(system.model(), system.data());
-  energy_.potential = gravity + joint_springs + element_energy;
-  energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
+  for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
+    const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
+    joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
+    if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
+  }
   require_stages(system.data(), stages, t, evaluation);
   csv_row_.clear();
   for (Channel& channel : channels_) {
@@ -263,16 +271,13 @@ void Recorder::record(double t, const VectorX& y) {
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
 
-  for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
-    const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
-    joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
-    if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
+  if (records_energy_) {
+    const double kinetic = energy_.kinetic, energy = energy_.total;
+    if (samples_ == 0) initial_energy_ = energy;
+    max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
+    const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
+    if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   }
-  const double kinetic = energy_.kinetic, energy = energy_.total;
-  if (samples_ == 0) initial_energy_ = energy;
-  max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
-  const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
-  if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   ++samples_;
 }
 
@@ -291,7 +296,7 @@ void Recorder::finish() {
     file_->set_attribute(channel.path, "standard_deviation", channel.statistics.standard_deviation());
   }
   file_->set_attribute("/summary", "samples", samples_);
-  file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
+  if (records_energy_) file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
   compensators_.write(*file_);
   for (const JointLoad& load : joint_loads_) {
     file_->set_attribute("/summary", "peak_reaction_force_" + load.joint, load.peak);

@@ -67,6 +67,7 @@ class Recorder {
   CsvWriter* csv_;
   std::vector<Channel> channels_;
   bool needs_reactions_ = false;
+  bool records_energy_ = false;  // output.energy: the energy channels and the drift summary
   std::vector<double> row_, csv_row_;
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;

@@ -49,10 +49,11 @@ class RecordedLoad : public ForceElement {
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override {
-    // The wrapped element reads the position and velocity stages at t.
+    // The wrapped element reads the position and velocity stages, which must be those of t.
     if ((data.stages.current & (StageMarker::positions | StageMarker::velocities)) !=
-        (StageMarker::positions | StageMarker::velocities))
-      throw std::logic_error("recorded load '" + name() + "': the position and velocity stages are not current");
+            (StageMarker::positions | StageMarker::velocities) ||
+        data.stages.time != t)
+      throw std::logic_error("recorded load '" + name() + "': the position and velocity stages are not those of t");
     if (own_ > 0) element_->outputs(t, model, data, z, values.first(static_cast<std::size_t>(own_)));
     scratch_.clear();
     element_->apply(t, model, data, z, scratch_);

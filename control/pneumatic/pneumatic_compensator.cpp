@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "control/pneumatic/gas_spring.hpp"
-#include "kernel/system/ode_system.hpp"
+#include "kernel/math/numerical_error.hpp"
 
 namespace heavesim {
 

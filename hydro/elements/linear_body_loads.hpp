@@ -47,7 +47,10 @@ class LinearRestoring : public ForceElement {
   ElementDependencies dependencies() const override { return {false, true, false, false}; }
   /// V = xi^T K xi / 2 - f0 . xi [J], whose -dV/dxi is the load for a symmetric K (the
   /// small-motion potential; buoyancy's f0 . xi is the work against the constant
-  /// buoyancy, the weight's own potential being the kernel's).
+  /// buoyancy, the weight's own potential being the kernel's). The quadratic form sees
+  /// only sym(K): the skew part of a K from which WAMIT's gravitational terms were taken
+  /// out (C46, C56) does work that no potential holds, so the energy channel does not
+  /// close by that much.
   double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX>) const override {
     const Vector6 xi = displacement(body_motion(model, data, link_).X_world_body, reference_);
     return 0.5 * xi.dot(stiffness_ * xi) - constant_load_.dot(xi);

@@ -68,7 +68,7 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
     }
     data.acceleration_world[i] = a;
   }
-  data.stages.current |= StageMarker::accelerations;
+  data.stages.accelerations_computed();
   return data.qdd;
 }
 

@@ -24,7 +24,7 @@ const VectorX& constrained_forward_dynamics(const Model& model, Data& data, doub
   data.kkt_solver.solve(data.kkt_rhs, data.constraint_multipliers);
   data.qdd = data.kkt_free_qdd;
   data.qdd.noalias() += data.kkt_minv_jt * data.constraint_multipliers;
-  data.stages.current |= StageMarker::accelerations;  // (the unconstrained path set it already)
+  data.stages.accelerations_computed();  // (the unconstrained path set it already)
   return data.qdd;
 }
 

@@ -9,7 +9,7 @@ const VectorX& composite_rigid_body_forward_dynamics(const Model& model, Data& d
   data.qdd = tau - bias;
   data.mass_matrix_cholesky.compute(mass_matrix(model, data));
   data.mass_matrix_cholesky.solveInPlace(data.qdd);
-  data.stages.current |= StageMarker::accelerations;
+  data.stages.accelerations_computed();
   return data.qdd;
 }
 

@@ -23,6 +23,7 @@ const VectorX& inverse_dynamics(const Model& model, Data& data, const VectorX& q
       data.tau[joint.v_index + k] = dot(data.motion_subspace_world.col(joint.v_index + k), data.joint_wrench_world[i]);
     if (joint.parent > 0) data.joint_wrench_world[joint.parent] += data.joint_wrench_world[i];
   }
+  data.stages.accelerations_overwritten();  // acceleration_world and the wrenches are those of `qdd`
   return data.tau;
 }
 

@@ -3,8 +3,14 @@
 namespace heavesim {
 
 void compute_joint_wrenches(const Model& model, Data& data, ExternalForces external_forces_world) {
+  const bool accelerations_current = data.stages.current & StageMarker::accelerations;
   inverse_dynamics(model, data, data.qdd, external_forces_world);
-  data.stages.current |= StageMarker::reactions;
+  // The pass ran on data.qdd: its accelerations and wrenches belong to this evaluation
+  // exactly when qdd did.
+  if (accelerations_current) {
+    data.stages.accelerations_computed();
+    data.stages.reactions_computed();
+  }
 }
 
 JointReaction joint_reaction(const Model& model, const Data& data, int joint_index) {

@@ -1,5 +1,7 @@
 #include "kernel/algorithms/kinematics.hpp"
 
+#include <stdexcept>
+
 namespace heavesim {
 
 void update_positions(const Model& model, Data& data, const VectorX& q) {
@@ -26,6 +28,9 @@ void update_positions(const Model& model, Data& data, const VectorX& q) {
 }
 
 void update_velocities(const Model& model, Data& data, const VectorX& q, const VectorX& v) {
+  // The velocity stage reads the placements and world subspaces of the position stage.
+  if (!(data.stages.current & StageMarker::positions))
+    throw std::logic_error("update_velocities: the position stage of this Data is not current");
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Motion& v_parent = data.velocity_world[joint.parent];
@@ -49,7 +54,7 @@ void update_velocities(const Model& model, Data& data, const VectorX& q, const V
     data.bias_acceleration_world[i] = bias;
     data.bias_force_world[i] = data.velocity_world[i].cross(link_momentum(model, data, i, data.velocity_world[i]));
   }
-  data.stages.current |= StageMarker::velocities;
+  data.stages.velocities_computed();
 }
 
 }  // namespace heavesim

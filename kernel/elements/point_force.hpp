@@ -16,6 +16,11 @@ class PointForce : public ForceElement {
   }
   /// The point's place (the moment about the world origin).
   ElementDependencies dependencies() const override { return {false, true, false, false}; }
+  /// A constant world force is conservative: V = -F . p_world [J], p the point's world
+  /// position (zero where the point is at the world origin).
+  double potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const override {
+    return -force_world_.dot(point_.position_world(data));
+  }
 
  private:
   std::string name_;

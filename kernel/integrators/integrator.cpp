@@ -48,7 +48,7 @@ std::unique_ptr<Integrator> make_explicit(const IntegratorSettings& settings, Od
     case IntegrationMethod::ida:
     case IntegrationMethod::hht: break;
   }
-  return nullptr;
+  throw std::logic_error("make_explicit: " + integration_method_name(settings.method) + " is not an explicit method");
 }
 
 }  // namespace

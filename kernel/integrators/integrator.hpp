@@ -67,7 +67,7 @@ class MultibodySystem;
 /// must outlive it.
 std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, MultibodySystem& system);
 /// The integrator of settings.method on a plain ODE (IDA on F = y' - f(t, y)); HHT needs
-/// a second-order form and is refused with std::invalid_argument. `system` must outlive it.
+/// a second-order form and is refused with a ParameterError at `integrator`. `system` must outlive it.
 std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, OdeSystem& system);
 std::string integration_method_name(IntegrationMethod method);
 

@@ -18,13 +18,16 @@ using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 
 using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 
 /// Which stages of a Data hold values of one evaluation (MuJoCo's computed-stage
-/// flags, Simbody's realization stages). Every algorithm that computes a stage sets its
-/// bit; the position stage starts a new evaluation: it clears the other bits and
-/// advances the counter. The system that evaluates at a time t records t.
+/// flags, Simbody's realization stages). Every algorithm that computes a stage says so,
+/// and a stage invalidates the ones that derive from it: new positions start a new
+/// evaluation (nothing else is current); new velocities on the same positions are a new
+/// evaluation too (the old accelerations and wrenches are gone); new accelerations
+/// leave the reactions of the old ones behind. The system that evaluates at a time t
+/// records t. A reader keeps the evaluation number and asks require_stages().
 struct StageMarker {
   enum Stage : unsigned { positions = 1u, velocities = 2u, accelerations = 4u, reactions = 8u };
   unsigned current = 0;  // bits of the stages computed in this evaluation
-  long evaluation = 0;   // advanced by every position stage
+  long evaluation = 0;   // advanced by every position or velocity stage
   double time = std::numeric_limits<double>::quiet_NaN();  // s, of this evaluation (NaN: not recorded)
 
   void begin_evaluation() {
@@ -32,6 +35,16 @@ struct StageMarker {
     ++evaluation;
     time = std::numeric_limits<double>::quiet_NaN();
   }
+  void velocities_computed() {
+    current = (current & positions) | velocities;
+    ++evaluation;
+    time = std::numeric_limits<double>::quiet_NaN();
+  }
+  void accelerations_computed() { current = (current & (positions | velocities)) | accelerations; }
+  void reactions_computed() { current |= reactions; }
+  /// An inverse-dynamics pass for an acceleration of the caller's overwrote the
+  /// acceleration stage and the joint wrenches.
+  void accelerations_overwritten() { current &= positions | velocities; }
 };
 
 struct Data {

@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "kernel/algorithms/inverse_dynamics.hpp"
+#include "kernel/algorithms/kinematics.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "samples/oscillators.hpp"
 
@@ -42,6 +44,43 @@ TEST(StageMarker, AStaleReadIsDetected) {
   EXPECT_THROW(require_stages(system.data(), StageMarker::accelerations, system.data().stages.time,
                               system.data().stages.evaluation),
                std::logic_error);
+}
+
+TEST(StageMarker, NewVelocitiesOnTheSamePositionsAreANewEvaluation) {
+  MultibodySystem system(samples::vertical_slider(10.0));
+  const VectorX y = system.initial_state(VectorX::Constant(1, 0.2), VectorX::Constant(1, 0.1));
+  system.evaluate(0.5, y, true);
+  const long evaluation = system.data().stages.evaluation;
+  // Same q, another v: the placements stay, but what was derived from the old speeds
+  // (accelerations, reactions) is gone and an old reader must see it.
+  VectorX other = y;
+  other[1] = -0.3;
+  system.compute_kinematics(other);
+  const StageMarker& stages = system.data().stages;
+  EXPECT_EQ(stages.current, kinematics);
+  EXPECT_NE(stages.evaluation, evaluation);
+  EXPECT_THROW(require_stages(system.data(), kinematics, 0.5, evaluation), std::logic_error);
+}
+
+TEST(StageMarker, InverseDynamicsOverwritesTheAccelerationStage) {
+  MultibodySystem system(samples::vertical_slider(10.0));
+  const VectorX y = system.initial_state(VectorX::Constant(1, 0.2), VectorX::Constant(1, 0.1));
+  system.evaluate(0.5, y, true);
+  Data& data = system.mutable_data();
+  // An inverse-dynamics pass for the caller's own acceleration rewrites the link
+  // accelerations and joint wrenches: neither the acceleration nor the reaction stage is
+  // the evaluation's any more.
+  inverse_dynamics(system.model(), data, VectorX::Constant(1, 3.0));
+  EXPECT_EQ(data.stages.current, kinematics);
+}
+
+TEST(StageMarker, VelocitiesNeedTheirPositions) {
+  const auto model_pointer = samples::vertical_slider(10.0);
+  const Model& model = *model_pointer;
+  Data data(model);
+  EXPECT_THROW(update_velocities(model, data, VectorX::Zero(1), VectorX::Zero(1)), std::logic_error);
+  update_positions(model, data, VectorX::Zero(1));
+  EXPECT_NO_THROW(update_velocities(model, data, VectorX::Zero(1), VectorX::Zero(1)));
 }
 
 }  // namespace
