@@ -106,7 +106,13 @@ void GglDaeForm::configuration_maps() {
   const VectorX& q = system_.configuration();
   N_.setZero(model.nq, model.nv);
   N_plus_.setZero(model.nv, model.nq);
-  VectorX unit = VectorX::Zero(model.nv), qdot(model.nq), qdot_zero(model.nq);
+  // Workspaces sized once (the Newton matrix is rebuilt often: no allocation here).
+  VectorX& unit = map_unit_;
+  VectorX& qdot = map_qdot_;
+  VectorX& qdot_zero = map_qdot_zero_;
+  unit.setZero(model.nv);
+  qdot.resize(model.nq);
+  qdot_zero.resize(model.nq);
   configuration_derivative(model, q, unit, qdot_zero);
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
@@ -123,8 +129,12 @@ void GglDaeForm::configuration_maps() {
       unit[joint.v_index + k] = 0.0;
       N_.block(joint.q_index, joint.v_index + k, joint.nq, 1) = (qdot - qdot_zero).segment(joint.q_index, joint.nq);
     }
-    const MatrixX N = N_.block(joint.q_index, joint.v_index, joint.nq, joint.nv);
-    N_plus_.block(joint.v_index, joint.q_index, joint.nv, joint.nq) = (N.transpose() * N).ldlt().solve(N.transpose());
+    // A joint's map is at most 7 x 6 (the free joint): fixed-capacity matrices, no heap.
+    using JointMap = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 7, 6>;
+    using JointGram = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+    const JointMap N = N_.block(joint.q_index, joint.v_index, joint.nq, joint.nv);
+    const JointGram gram = N.transpose() * N;
+    N_plus_.block(joint.v_index, joint.q_index, joint.nv, joint.nq) = gram.ldlt().solve(N.transpose());
   }
 }
 
@@ -164,7 +174,10 @@ bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, double 
       J.block(0, k, nq, 1) -= (qdot_plus_ - qdot_) / h_raw;
     }
   }
-  J.block(0, 0, nq, nq).noalias() += N_ * ggl_derivatives_.jt_mu_q * N_plus_;
+  // N (d(J^T mu)/dq) N+, in two products through a kept workspace (a triple product
+  // would make a heap temporary at every Newton matrix).
+  n_times_jt_mu_q_.noalias() = N_ * ggl_derivatives_.jt_mu_q;
+  J.block(0, 0, nq, nq).noalias() += n_times_jt_mu_q_ * N_plus_;
   J.block(0, iv, nq, nv) = -N_;
 
   // F_v = ID(q, v, v') - Q - J^T lambda;  F_z = z' - g.

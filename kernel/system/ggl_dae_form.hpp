@@ -31,6 +31,8 @@ class GglDaeForm final : public DaeSystem {
   std::vector<int> rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
   VectorX w_, qdot_, qdot_plus_, zdot_, vdot_, lambda_, ode_rate_, q_perturbed_;
   MatrixX N_, N_plus_;
+  VectorX map_unit_, map_qdot_, map_qdot_zero_;  // workspaces of configuration_maps()
+  MatrixX n_times_jt_mu_q_;                      // nq x nv, workspace of jacobian()
   MatrixX rows_jacobian_;  // J of the kept rows at the last residual
   VectorX constraint_;     // Phi of the kept rows
   DynamicsDerivatives derivatives_;

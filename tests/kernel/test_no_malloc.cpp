@@ -3,6 +3,8 @@
 // no_malloc_config.hpp) if anything allocates while allocation is forbidden.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <array>
 #include <random>
 
@@ -18,6 +20,7 @@
 #include "kernel/system/ggl_dae_form.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "kernel/system/ode_form.hpp"
+#include "samples/floating_bodies.hpp"
 #include "samples/loop_mechanisms.hpp"
 #include "samples/random_models.hpp"
 
@@ -116,6 +119,27 @@ TEST(NoMalloc, ClosedLoopDaeResidualDoesNotAllocate) {
   system.residual(0.0, dae_y, dae_yp, residual);
   ForbidAllocation forbid;
   EXPECT_NO_THROW(system.residual(0.0, dae_y, dae_yp, residual));
+}
+
+TEST(NoMalloc, DaeNewtonMatrixDoesNotAllocate) {
+  // IDA rebuilds the Newton matrix dF/dy + cj dF/dy' many times per run: with a closed
+  // loop (the multiplier columns) and with a free joint (the quaternion's N and N+).
+  StrutFourBar four_bar;
+  MultibodySystem floating(samples::free_floating_body("box", Inertia(2.0, Vector3(0.1, 0.0, 0.0),
+                                                                    Matrix3(Vector3(0.3, 0.4, 0.5).asDiagonal()))));
+  VectorX floating_q(7);
+  floating_q << 0.1, 0.2, 0.3, std::sqrt(0.5), std::sqrt(0.5), 0.0, 0.0;  // turned 90 degrees about x
+  for (MultibodySystem* system : {&four_bar.system, &floating}) {
+    GglDaeForm form(*system);
+    const VectorX state =
+        system == &floating ? floating.initial_state(floating_q, VectorX::Constant(6, 0.3)) : four_bar.y;
+    VectorX dae_y, dae_yp;
+    form.dae_initial_values(0.0, state, dae_y, dae_yp);
+    MatrixX newton(dae_y.size(), dae_y.size());
+    form.jacobian(0.0, dae_y, dae_yp, 10.0, newton);  // first use sizes the workspaces
+    ForbidAllocation forbid;
+    EXPECT_NO_THROW(form.jacobian(0.0, dae_y, dae_yp, 10.0, newton));
+  }
 }
 
 TEST(NoMalloc, ClosedLoopExplicitPathDoesNotAllocate) {
