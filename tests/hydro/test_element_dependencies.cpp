@@ -1,0 +1,110 @@
+// ForceElement::dependencies() lets the implicit forms skip the finite-difference
+// columns of what no element reads: a declaration that says "does not depend on v" for
+// an element that does would silently drop Newton-matrix columns. Each element here is
+// evaluated at a state and again with only the quantity it says it ignores changed (the
+// time, the speeds, the pose, its own states): its loads and state rates must not move
+// at all. The perturbations are large (order one in every component), so any real
+// dependence shows far above round-off; the comparison is exact.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "hydro/elements/linear_body_loads.hpp"
+#include "kernel/algorithms/kinematics.hpp"
+#include "kernel/elements/ground_contact.hpp"
+#include "kernel/elements/point_force.hpp"
+#include "kernel/elements/spring_damper.hpp"
+#include "samples/floating_bodies.hpp"
+
+namespace heavesim {
+namespace {
+
+struct Evaluation {
+  AlignedVector<Force> loads;
+  VectorX joint_force, state_rate;
+};
+
+class ElementDependencyTest : public ::testing::Test {
+ protected:
+  ElementDependencyTest()
+      : model_(samples::free_floating_body("hull", Inertia(3.0, Vector3(0.1, -0.2, 0.05),
+                                                           Matrix3(Vector3(0.4, 0.5, 0.6).asDiagonal())))),
+        data_(*model_) {
+    q_.resize(7);
+    q_ << 0.3, -0.2, -0.15, std::cos(0.2), std::sin(0.2) * 0.6, 0.0, std::sin(0.2) * 0.8;
+    v_.resize(6);
+    v_ << 0.3, -0.1, 0.2, 0.5, -0.4, 0.25;
+  }
+
+  Evaluation evaluate(const ForceElement& element, double t, const VectorX& q, const VectorX& v,
+                      const VectorX& z) {
+    update_positions(*model_, data_, q);
+    update_velocities(*model_, data_, q, v);
+    AppliedForces forces(*model_);
+    element.apply(t, *model_, data_, z, forces);
+    Evaluation result{forces.external_force_world, forces.joint_force, VectorX::Zero(z.size())};
+    element.state_derivative(t, *model_, data_, z, result.state_rate);
+    return result;
+  }
+
+  static void expect_same(const Evaluation& a, const Evaluation& b, const std::string& what) {
+    for (std::size_t i = 0; i < a.loads.size(); ++i) {
+      EXPECT_EQ(a.loads[i].angular(), b.loads[i].angular()) << what << ", link " << i;
+      EXPECT_EQ(a.loads[i].linear(), b.loads[i].linear()) << what << ", link " << i;
+    }
+    EXPECT_EQ(a.joint_force, b.joint_force) << what;
+    EXPECT_EQ(a.state_rate, b.state_rate) << what;
+  }
+
+  /// The element loads the body at the base state (so the checks are not vacuous), and
+  /// its loads do not move when anything it says it ignores moves.
+  void check(const ForceElement& element) {
+    const ElementDependencies declared = element.dependencies();
+    VectorX z = VectorX::Zero(element.state_size());
+    element.initial_state(z);
+    const Evaluation base = evaluate(element, 1.0, q_, v_, z);
+    EXPECT_GT(base.loads[1].linear().norm() + base.loads[1].angular().norm(), 1.0) << element.name();
+    if (!declared.time) expect_same(base, evaluate(element, 7.5, q_, v_, z), element.name() + ": time");
+    if (!declared.velocity) {
+      VectorX v = v_;
+      v << -0.7, 0.9, 0.4, -1.1, 0.8, -0.6;
+      expect_same(base, evaluate(element, 1.0, q_, v, z), element.name() + ": speeds");
+    }
+    if (!declared.configuration) {
+      VectorX q = q_;
+      q << -0.4, 0.5, 0.35, std::cos(0.6), 0.0, std::sin(0.6), 0.0;
+      expect_same(base, evaluate(element, 1.0, q, v_, z), element.name() + ": pose");
+    }
+    if (!declared.element_states && z.size() > 0)
+      expect_same(base, evaluate(element, 1.0, q_, v_, z.array() + 1.0), element.name() + ": own states");
+  }
+
+  std::shared_ptr<const Model> model_;
+  Data data_;
+  VectorX q_, v_;
+};
+
+TEST_F(ElementDependencyTest, KernelElementsReadOnlyWhatTheyDeclare) {
+  check(SpringDamper("spring", BodyPoint{0, Vector3(1.0, 0.5, 2.0)}, BodyPoint{1, Vector3(0.2, 0.1, -0.3)},
+                     SpringDamperParameters{100.0, 5.0, 0.5}));
+  check(PointForce("hook", BodyPoint{1, Vector3(0.2, -0.1, 0.4)}, Vector3(10.0, -20.0, -300.0)));
+  // The surface above the point, so that the contact carries load in both states.
+  check(GroundContact("bit", BodyPoint{1, Vector3(0.0, 0.0, -0.1)}, GroundContactParameters{1e4, 50.0, 2.0}));
+}
+
+TEST_F(ElementDependencyTest, LinearHydroLoadsReadOnlyWhatTheyDeclare) {
+  Matrix6 stiffness = Matrix6::Identity() * 1e3;
+  stiffness(3, 5) = 40.0;  // an asymmetric coupling, as WAMIT's C46 after the gravity part is taken out
+  Vector6 pretension;
+  pretension << 1.0, -2.0, 30.0, 0.1, 0.2, 0.0;
+  check(hydro::LinearRestoring("restoring", 1, stiffness, pretension, Transform::Identity()));
+  Vector6 quadratic;
+  quadratic << 1.0, 2.0, 3.0, 0.4, 0.5, 0.6;
+  check(hydro::BodyDamping("damping", 1, Matrix6::Identity() * 20.0, quadratic));
+}
+
+}  // namespace
+}  // namespace heavesim
