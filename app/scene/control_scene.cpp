@@ -61,7 +61,7 @@ bool same_stroke(const StrokeDefinition& a, const StrokeDefinition& b) {
 }  // namespace
 
 void add_compensators(const CaseDefinition& definition, const Model& model, MultibodySystem& system, double t0,
-                      const VectorX& q0) {
+                      const VectorX& q0, SummarisedElements& summarised) {
   if (definition.compensators.empty()) return;
   Data data(model);
   update_positions(model, data, q0);
@@ -92,7 +92,8 @@ void add_compensators(const CaseDefinition& definition, const Model& model, Mult
         if (def.balance_pressure)
           b.pneumatic = balanced_pneumatic(def.pneumatic, static_stroke_load(model, data, system, t0, q0, unit),
                                            initial_stroke);
-        system.add_force_element(std::make_unique<PneumaticCompensator>(def.name, axis, b.pneumatic));
+        summarised.pneumatic_compensators.push_back(
+            add_element(system, std::make_unique<PneumaticCompensator>(def.name, axis, b.pneumatic)));
       } else {
         ActiveCompensatorParameters& p = b.active;
         p.controlled_point =
@@ -104,7 +105,8 @@ void add_compensators(const CaseDefinition& definition, const Model& model, Mult
         p.controlled_height = p.controlled_point.position_world(data).z();
         p.base_height = base_motion(axis, model, data).position_world.z();
         p.initial_stroke = initial_stroke;
-        system.add_force_element(std::make_unique<ActiveCompensator>(def.name, axis, p));
+        summarised.active_compensators.push_back(
+            add_element(system, std::make_unique<ActiveCompensator>(def.name, axis, p)));
       }
       built.push_back(b);
     } catch (const ParameterError& error) {

@@ -1,6 +1,7 @@
 #pragma once
 // Builds the case's compensators (control/) on the model.
 #include "app/case/case_definition.hpp"
+#include "app/scene/element_handles.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
@@ -9,8 +10,9 @@ namespace heavesim {
 /// for the (assembled) initial state q0 at time t0: resolves strokes and body points,
 /// sets gas pressures from static balance where asked, takes the active compensators'
 /// initial references, and checks each controller's closed-loop stability
-/// (control/analysis/stroke_loop.hpp). Throws InputError naming the key.
+/// (control/analysis/stroke_loop.hpp). Records each one in `summarised`. Throws
+/// InputError naming the key.
 void add_compensators(const CaseDefinition& definition, const Model& model, MultibodySystem& system, double t0,
-                      const VectorX& q0);
+                      const VectorX& q0, SummarisedElements& summarised);
 
 }  // namespace heavesim

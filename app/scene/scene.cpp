@@ -49,7 +49,7 @@ void add_force_elements(const CaseDefinition& definition, const Model& model, Mu
 /// preload (the weight on bit WOB0). Added before the compensators, whose balance
 /// pressure then counts the preload.
 void add_ground_contacts(const CaseDefinition& definition, const Model& model, MultibodySystem& system,
-                         const VectorX& q0) {
+                         const VectorX& q0, SummarisedElements& summarised) {
   Data& data = system.mutable_data();
   update_positions(model, data, q0);
   for (const ForceDefinition& force : definition.forces) {
@@ -59,7 +59,8 @@ void add_ground_contacts(const CaseDefinition& definition, const Model& model, M
       throw force_error(definition, force.name, "body", "'ground'", "the name of the body that touches the ground");
     GroundContactParameters parameters{force.spring.stiffness, force.spring.damping, 0.0};
     parameters.surface_height = point.position_world(data).z() + force.preload / force.spring.stiffness;
-    system.add_force_element(std::make_unique<GroundContact>(force.name, point, parameters));
+    summarised.ground_contacts.push_back(
+        add_element(system, std::make_unique<GroundContact>(force.name, point, parameters)));
   }
 }
 
@@ -145,8 +146,8 @@ Scene build_scene(const CaseDefinition& definition) {
     v0[joint.v_index + driver->coordinate] = start.velocity;
   }
   if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
-  add_ground_contacts(definition, model, *scene.system, q0);
-  add_compensators(definition, model, *scene.system, definition.solver.t_start, q0);
+  add_ground_contacts(definition, model, *scene.system, q0, scene.summarised);
+  add_compensators(definition, model, *scene.system, definition.solver.t_start, q0, scene.summarised);
   scene.initial_state = scene.system->initial_state(q0, v0);
   return scene;
 }
