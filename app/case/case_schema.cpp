@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/forces/force_registry.hpp"
+
 namespace heavesim {
 namespace {
 
@@ -81,39 +83,6 @@ constexpr KeySpec driver_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
-constexpr KeySpec spring_damper_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "spring_damper"},
-    {"body_a", "text", "–", "required", "first end's body (or ground)"},
-    {"point_a", "vector", "m", "`[0, 0, 0]`", "first end, body a's frame"},
-    {"body_b", "text", "–", "required", "second end's body (or ground)"},
-    {"point_b", "vector", "m", "`[0, 0, 0]`", "second end, body b's frame"},
-    {"stiffness", "number", "N/m", "0", "k"},
-    {"damping", "number", "N s/m", "0", "c"},
-    {"rest_length", "number", "m", "required", "l0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec point_force_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "point_force"},
-    {"body", "text", "–", "required", "the loaded body"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "the loaded point, body frame"},
-    {"force", "vector", "N", "required", "constant force, world frame"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec ground_contact_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "ground_contact"},
-    {"body", "text", "–", "required", "the body that touches the ground"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "the contact point, body frame"},
-    {"stiffness", "number", "N/m", "required", "k_f > 0"},
-    {"damping", "number", "N s/m", "0", "c_f"},
-    {"preload", "number", "N", "0", "contact force at the initial state"},
-    {"description", "text", "–", "–", "free text"},
-};
-
 constexpr KeySpec hydrostatics_keys[] = {
     {"name", "text", "–", "required", "unique"},
     {"type", "choice", "–", "required", "hydrostatics"},
@@ -182,34 +151,6 @@ constexpr KeySpec mooring_keys[] = {
     {"stiffness", "matrix", "N/m, N, N m/rad", "required", "K, 6 x 6 or its diagonal"},
     {"pretension", "vector", "N, N m", "0", "f0"},
     {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec pneumatic_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "pneumatic_compensator"},
-    {"description", "text", "–", "–", "free text"},
-    {"stroke", "map", "–", "required", "where it acts"},
-    {"piston_area", "number", "m²", "required", "A"},
-    {"gas_volume", "number", "m³", "required", "V0 at mid-stroke"},
-    {"gas_pressure", "number or balance", "Pa", "`balance`", "absolute gas pressure at mid-stroke"},
-    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod side"},
-    {"polytropic_exponent", "number or map", "–", "1.4", "n, or compression and expansion"},
-    {"hysteresis_speed", "number", "m/s", "0.01", "width of the n_c/n_e switch"},
-    {"initial_temperature", "number", "K", "288.15", "T0"},
-    {"cooling", "map", "–", "none", "Newton cooling to the vessel walls"},
-    {"piping", "map", "–", "none", "pipe losses"},
-    {"seal_friction", "map", "–", "none", "Coulomb and viscous seal friction"},
-    {"end_stops", "map", "–", "`{lower: -3.81, upper: 3.81, stiffness: 1e8, damping: 1e6}`", "one-sided end stops"},
-};
-
-constexpr KeySpec active_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "active_compensator"},
-    {"description", "text", "–", "–", "free text"},
-    {"stroke", "map", "–", "required", "where it acts"},
-    {"actuator", "map", "–", "required", "force or hydraulic actuator"},
-    {"controller", "map", "–", "required", "PID and feed-forward"},
-    {"measurement", "map", "–", "none", "controlled point or MRU"},
 };
 
 constexpr KeySpec actuator_keys[] = {
@@ -415,7 +356,9 @@ constexpr KeySpec ramp_keys[] = {
     {"duration", "number", "s", "required unless `kind: none`", "t_r (> 0)"},
 };
 
-constexpr SchemaSection sections[] = {
+/// The sections of everything but the force kinds, whose keys the kinds hold
+/// (app/forces/, through the registry).
+constexpr SchemaSection fixed_sections[] = {
     {"top-level", root_keys},
     {"environment", environment_keys},
     {"waves", waves_keys},
@@ -431,9 +374,6 @@ constexpr SchemaSection sections[] = {
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
-    {"spring_damper", spring_damper_keys},
-    {"point_force", point_force_keys},
-    {"ground_contact", ground_contact_keys},
     {"hydrostatics", hydrostatics_keys},
     {"radiation", radiation_keys},
     {"wave_excitation", wave_excitation_keys},
@@ -444,13 +384,11 @@ constexpr SchemaSection sections[] = {
     {"heave_estimate", heave_estimate_keys},
     {"stroke", stroke_keys},
     {"body_point", body_point_keys},
-    {"pneumatic_compensator", pneumatic_keys},
     {"polytropic_exponent", polytropic_exponent_keys},
     {"end_stops", end_stops_keys},
     {"seal_friction", seal_friction_keys},
     {"cooling", cooling_keys},
     {"piping", piping_keys},
-    {"active_compensator", active_keys},
     {"actuator", actuator_keys},
     {"stroke_range", stroke_range_keys},
     {"valve", valve_keys},
@@ -472,10 +410,18 @@ bool in_form(std::string_view forms, std::string_view form) {
 
 }  // namespace
 
-std::span<const SchemaSection> case_schema() { return sections; }
+std::span<const SchemaSection> case_schema() {
+  static const std::vector<SchemaSection> sections = [] {
+    std::vector<SchemaSection> all(std::begin(fixed_sections), std::end(fixed_sections));
+    for (const ForceKind& kind : force_kinds())
+      if (kind.keys) all.push_back({kind.type, kind.keys()});
+    return all;
+  }();
+  return sections;
+}
 
 std::span<const KeySpec> schema_keys(std::string_view section) {
-  for (const SchemaSection& s : sections)
+  for (const SchemaSection& s : case_schema())
     if (s.name == section) return s.keys;
   throw std::out_of_range("no schema section '" + std::string(section) + "'");
 }
