@@ -56,7 +56,6 @@ struct CaseDefinition {
   std::vector<CouplerDefinition> couplers;
   std::vector<DriverDefinition> drivers;
   std::vector<ForceDefinition> forces;              // from forces:, in declaration order (app/forces/)
-  std::vector<HydroForceDefinition> hydro_forces;   // from forces: (hydro_reader.cpp)
   WaterDefinition water;                            // environment.water_density, water_depth
   WaveDefinition waves;                             // waves: (none unless declared)
   std::map<std::string, JointInitialState> initial_states;  // by joint name

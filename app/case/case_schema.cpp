@@ -83,76 +83,6 @@ constexpr KeySpec driver_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
-constexpr KeySpec hydrostatics_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "hydrostatics"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"hst", "text", "–", "one of hst, mesh, stiffness", "WAMIT .hst, BEMIO .h5 or Capytaine .nc file"},
-    {"mesh", "text", "–", "one of hst, mesh, stiffness", ".gdf or .stl hull (nonlinear)"},
-    {"stiffness", "matrix", "N/m, N, N m/rad", "one of hst, mesh, stiffness", "C given directly"},
-    {"displaced_volume", "number", "m³", "buoyancy = weight", "V for f0 = rho g V"},
-    {"hst_includes_gravity", "boolean", "–", "`false`", "the .hst holds WAMIT's gravity terms"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec radiation_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "radiation"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"file", "text", "–", "required", "WAMIT .1, BEMIO .h5 or Capytaine .nc file"},
-    {"memory", "choice", "–", "`state_space`", "state_space or convolution"},
-    {"state_space_order", "number", "–", "12", "states per realised mode pair, 2 .. 24"},
-    {"kernel_duration", "number", "s", "60", "length of K(t)"},
-    {"kernel_step", "number", "s", "0.05", "sample step of K(t)"},
-    {"modes", "list", "–", "all", "WAMIT modes 1..6 whose memory is kept"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec wave_excitation_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "wave_excitation"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"file", "text", "–", "one of file, heave_estimate", "WAMIT .3, BEMIO .h5 or Capytaine .nc file"},
-    {"heave_estimate", "map", "–", "one of file, heave_estimate", "semi-submersible hand estimate"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec linear_damping_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "linear_damping"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"damping", "matrix", "N s/m, N s, N m s/rad", "required", "B, 6 x 6 or its diagonal"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec quadratic_damping_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "quadratic_damping"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"coefficients", "vector", "N s²/m², N m s²/rad²", "required", "b_i >= 0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec added_mass_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "added_mass"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"matrix", "matrix", "kg, kg m, kg m²", "required", "A, 6 x 6 or its diagonal"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec mooring_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "mooring"},
-    {"body", "text", "–", "required", "the moored body"},
-    {"stiffness", "matrix", "N/m, N, N m/rad", "required", "K, 6 x 6 or its diagonal"},
-    {"pretension", "vector", "N, N m", "0", "f0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
 constexpr KeySpec actuator_keys[] = {
     {"type", "choice", "–", "required", "force or hydraulic"},
     {"time_constant", "number", "s", "0.1", "first-order lag", "force"},
@@ -374,13 +304,6 @@ constexpr SchemaSection fixed_sections[] = {
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
-    {"hydrostatics", hydrostatics_keys},
-    {"radiation", radiation_keys},
-    {"wave_excitation", wave_excitation_keys},
-    {"linear_damping", linear_damping_keys},
-    {"quadratic_damping", quadratic_damping_keys},
-    {"added_mass", added_mass_keys},
-    {"mooring", mooring_keys},
     {"heave_estimate", heave_estimate_keys},
     {"stroke", stroke_keys},
     {"body_point", body_point_keys},
@@ -413,8 +336,7 @@ bool in_form(std::string_view forms, std::string_view form) {
 std::span<const SchemaSection> case_schema() {
   static const std::vector<SchemaSection> sections = [] {
     std::vector<SchemaSection> all(std::begin(fixed_sections), std::end(fixed_sections));
-    for (const ForceKind& kind : force_kinds())
-      if (kind.keys) all.push_back({kind.type, kind.keys()});
+    for (const ForceKind& kind : force_kinds()) all.push_back({kind.type, kind.keys()});
     return all;
   }();
   return sections;

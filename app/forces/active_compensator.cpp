@@ -95,7 +95,7 @@ void read_hydraulic_actuator(const NodeReader& reader, HydraulicActuatorParamete
 
 std::span<const KeySpec> ActiveCompensatorDefinition::keys() { return active_keys; }
 
-ActiveCompensatorDefinition ActiveCompensatorDefinition::read(const NodeReader& item) {
+ActiveCompensatorDefinition ActiveCompensatorDefinition::read(const NodeReader& item, const CaseDefinition&) {
   ActiveCompensatorDefinition def;
   item.expect_section("active_compensator");
   def.stroke = read_stroke(item["stroke"]);

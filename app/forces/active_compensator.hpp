@@ -14,7 +14,7 @@ struct ActiveCompensatorDefinition {
   static constexpr BuildStage stage = BuildStage::compensators;
   static std::span<const KeySpec> keys();
   /// Checks every parameter that can be checked without the model.
-  static ActiveCompensatorDefinition read(const NodeReader& item);
+  static ActiveCompensatorDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Resolves the stroke and the controlled point on the assembled initial state, takes
   /// the initial references; once every compensator is built, checks the closed loop
   /// on its stroke is stable (control/analysis/stroke_loop.hpp).

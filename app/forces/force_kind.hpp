@@ -4,8 +4,12 @@
 //   static constexpr std::string_view type;   // its `type` value and key-table section
 //   static constexpr BuildStage stage;        // when the scene builds it (below)
 //   static std::span<const KeySpec> keys();   // its keys (docs/case-format.md table)
-//   static Kind read(const NodeReader& item); // forces[i], its name already read
+//   static Kind read(const NodeReader& item, const CaseDefinition& definition);
+//                                             // forces[i], its name already read;
+//                                             // `definition`: the case read so far
 //   void build(const std::string& name, SceneBuildContext& context) const;
+// optionally (the hydro kinds, whose data files are read before the model is built)
+//   void read_data(const std::string& name, const CaseDefinition& definition, HydroData& data) const;
 // and one line in app/forces/force_kinds.hpp; the registry (force_registry.hpp) and the
 // scene derive everything else from that list.
 #include <span>
@@ -17,6 +21,7 @@
 
 namespace heavesim {
 
+struct CaseDefinition;     // app/case/case_definition.hpp
 struct SceneBuildContext;  // app/scene/scene_build_context.hpp
 
 /// When the scene builds a kind. Within a stage the elements are added in the order the

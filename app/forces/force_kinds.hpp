@@ -9,8 +9,15 @@
 #include <variant>
 
 #include "app/forces/active_compensator.hpp"
+#include "app/forces/added_mass.hpp"
 #include "app/forces/ground_contact.hpp"
+#include "app/forces/hydrostatics.hpp"
+#include "app/forces/linear_damping.hpp"
+#include "app/forces/mooring.hpp"
 #include "app/forces/pneumatic_compensator.hpp"
+#include "app/forces/quadratic_damping.hpp"
+#include "app/forces/radiation.hpp"
+#include "app/forces/wave_excitation.hpp"
 #include "app/forces/point_force.hpp"
 #include "app/forces/spring_damper.hpp"
 
@@ -21,7 +28,14 @@ using ForceKindDefinition = std::variant<
     PointForceDefinition,
     GroundContactDefinition,
     PneumaticCompensatorDefinition,
-    ActiveCompensatorDefinition>;
+    ActiveCompensatorDefinition,
+    AddedMassDefinition,
+    HydrostaticsDefinition,
+    RadiationDefinition,
+    WaveExcitationDefinition,
+    LinearDampingDefinition,
+    QuadraticDampingDefinition,
+    MooringDefinition>;
 
 /// A force element declared in `forces:`: its name and its kind's typed definition.
 struct ForceDefinition {

@@ -5,7 +5,6 @@
 #include <utility>
 
 #include "app/case/case_definition.hpp"
-#include "app/case/hydro_reader.hpp"
 #include "app/forces/force_kinds.hpp"
 
 namespace heavesim {
@@ -15,7 +14,7 @@ namespace {
 template <std::size_t I>
 void read_kind(const NodeReader& item, const std::string&, const std::string& name, CaseDefinition& definition) {
   using Kind = std::variant_alternative_t<I, ForceKindDefinition>;
-  definition.forces.push_back({name, ForceKindDefinition(std::in_place_index<I>, Kind::read(item))});
+  definition.forces.push_back({name, ForceKindDefinition(std::in_place_index<I>, Kind::read(item, definition))});
   definition.item_paths[name] = item.path();
 }
 
@@ -26,40 +25,20 @@ constexpr auto registered_kinds(std::index_sequence<I...>) {
                 &std::variant_alternative_t<I, ForceKindDefinition>::keys, &read_kind<I>}...};
 }
 
-constexpr auto typed_kinds = registered_kinds(std::make_index_sequence<std::variant_size_v<ForceKindDefinition>>{});
-
-/// The kinds not yet moved to app/forces/, read into their shared definitions.
-constexpr ForceKind legacy_kinds[] = {
-    {"added_mass", nullptr, read_hydro_force},
-    {"hydrostatics", nullptr, read_hydro_force},
-    {"radiation", nullptr, read_hydro_force},
-    {"wave_excitation", nullptr, read_hydro_force},
-    {"linear_damping", nullptr, read_hydro_force},
-    {"quadratic_damping", nullptr, read_hydro_force},
-    {"mooring", nullptr, read_hydro_force},
-};
-
-const std::vector<ForceKind>& kinds() {
-  static const std::vector<ForceKind> all = [] {
-    std::vector<ForceKind> list(typed_kinds.begin(), typed_kinds.end());
-    list.insert(list.end(), std::begin(legacy_kinds), std::end(legacy_kinds));
-    return list;
-  }();
-  return all;
-}
+constexpr auto kinds = registered_kinds(std::make_index_sequence<std::variant_size_v<ForceKindDefinition>>{});
 
 }  // namespace
 
-std::span<const ForceKind> force_kinds() { return kinds(); }
+std::span<const ForceKind> force_kinds() { return kinds; }
 
 std::vector<std::string_view> force_kind_names() {
   std::vector<std::string_view> names;
-  for (const ForceKind& kind : kinds()) names.push_back(kind.type);
+  for (const ForceKind& kind : kinds) names.push_back(kind.type);
   return names;
 }
 
 const ForceKind& force_kind(std::string_view type) {
-  for (const ForceKind& kind : kinds())
+  for (const ForceKind& kind : kinds)
     if (kind.type == type) return kind;
   throw std::out_of_range("no force kind '" + std::string(type) + "'");
 }

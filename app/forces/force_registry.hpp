@@ -17,8 +17,7 @@ struct CaseDefinition;
 
 struct ForceKind {
   std::string_view type;
-  /// The kind's keys (its section of the key table); null while the kind's table is
-  /// still in app/case/case_schema.cpp.
+  /// The kind's keys (its section of the key table).
   std::span<const KeySpec> (*keys)();
   /// Reads forces[i] of this kind, whose name has been read (and checked unique).
   void (*read)(const NodeReader& item, const std::string& type, const std::string& name, CaseDefinition& definition);

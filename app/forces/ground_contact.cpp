@@ -21,7 +21,7 @@ constexpr KeySpec ground_contact_keys[] = {
 
 std::span<const KeySpec> GroundContactDefinition::keys() { return ground_contact_keys; }
 
-GroundContactDefinition GroundContactDefinition::read(const NodeReader& item) {
+GroundContactDefinition GroundContactDefinition::read(const NodeReader& item, const CaseDefinition&) {
   GroundContactDefinition def;
   item.expect_section(type);
   def.body = item["body"].text();

@@ -14,7 +14,7 @@ struct GroundContactDefinition {
   /// the preload.
   static constexpr BuildStage stage = BuildStage::on_assembled;
   static std::span<const KeySpec> keys();
-  static GroundContactDefinition read(const NodeReader& item);
+  static GroundContactDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 
   std::string body;                 // the body that touches the ground

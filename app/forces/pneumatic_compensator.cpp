@@ -43,7 +43,7 @@ EndStops read_end_stops(const NodeReader& reader) {
 
 std::span<const KeySpec> PneumaticCompensatorDefinition::keys() { return pneumatic_keys; }
 
-PneumaticCompensatorDefinition PneumaticCompensatorDefinition::read(const NodeReader& item) {
+PneumaticCompensatorDefinition PneumaticCompensatorDefinition::read(const NodeReader& item, const CaseDefinition&) {
   PneumaticCompensatorDefinition def;
   item.expect_section("pneumatic_compensator");
   def.stroke = read_stroke(item["stroke"]);

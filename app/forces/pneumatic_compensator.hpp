@@ -11,7 +11,7 @@ struct PneumaticCompensatorDefinition {
   static constexpr BuildStage stage = BuildStage::compensators;
   static std::span<const KeySpec> keys();
   /// Checks every parameter that can be checked without the model.
-  static PneumaticCompensatorDefinition read(const NodeReader& item);
+  static PneumaticCompensatorDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Resolves the stroke on the assembled initial state, checks that it starts between
   /// the end stops, sets the gas pressure from the static balance where asked.
   void build(const std::string& name, SceneBuildContext& context) const;

@@ -19,7 +19,7 @@ constexpr KeySpec point_force_keys[] = {
 
 std::span<const KeySpec> PointForceDefinition::keys() { return point_force_keys; }
 
-PointForceDefinition PointForceDefinition::read(const NodeReader& item) {
+PointForceDefinition PointForceDefinition::read(const NodeReader& item, const CaseDefinition&) {
   PointForceDefinition def;
   item.expect_section(type);
   def.body = item["body"].text();

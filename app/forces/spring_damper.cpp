@@ -22,7 +22,7 @@ constexpr KeySpec spring_damper_keys[] = {
 
 std::span<const KeySpec> SpringDamperDefinition::keys() { return spring_damper_keys; }
 
-SpringDamperDefinition SpringDamperDefinition::read(const NodeReader& item) {
+SpringDamperDefinition SpringDamperDefinition::read(const NodeReader& item, const CaseDefinition&) {
   SpringDamperDefinition def;
   item.expect_section(type);
   def.body_a = item["body_a"].text();

@@ -10,7 +10,7 @@ struct SpringDamperDefinition {
   static constexpr std::string_view type = "spring_damper";
   static constexpr BuildStage stage = BuildStage::on_model;
   static std::span<const KeySpec> keys();
-  static SpringDamperDefinition read(const NodeReader& item);
+  static SpringDamperDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 
   std::string body_a, body_b;         // the ends' bodies ("ground" for the world)

@@ -84,7 +84,6 @@ Scene build_scene(const CaseDefinition& definition) {
   context.t_start = definition.solver.t_start;
   build_forces(BuildStage::on_model, context);
   build_forces(BuildStage::hydro, context);
-  add_hydro_elements(definition, hydro_data, model, *scene.system);
 
   VectorX q0 = model.neutral_configuration();
   VectorX v0 = VectorX::Zero(model.nv);
