@@ -83,45 +83,6 @@ constexpr KeySpec driver_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
-constexpr KeySpec actuator_keys[] = {
-    {"type", "choice", "–", "required", "force or hydraulic"},
-    {"time_constant", "number", "s", "0.1", "first-order lag", "force"},
-    {"max_force", "number", "N", "3.9e5", "saturation", "force"},
-    {"max_rate", "number", "N/s", "none", "rate limit", "force"},
-    {"piston_area", "number", "m²", "required", "A_A", "hydraulic"},
-    {"annulus_area", "number", "m²", "required", "A_B", "hydraulic"},
-    {"volume_a", "number", "m³", "required", "chamber A volume at mid-stroke", "hydraulic"},
-    {"volume_b", "number", "m³", "required", "chamber B volume at mid-stroke", "hydraulic"},
-    {"stroke_range", "map", "m", "`{lower: 0, upper: 0}`", "the cylinder's stroke", "hydraulic"},
-    {"bulk_modulus", "number", "Pa", "1e9", "effective beta", "hydraulic"},
-    {"internal_leakage", "number", "m³/(s·Pa)", "0", "cross-piston leakage", "hydraulic"},
-    {"external_leakage", "number", "m³/(s·Pa)", "0", "leakage to tank", "hydraulic"},
-    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod cross-section", "hydraulic"},
-    {"supply_pressure", "number", "Pa", "required", "constant supply pressure", "hydraulic"},
-    {"tank_pressure", "number", "Pa", "2e5", "return pressure", "hydraulic"},
-    {"initial_pressures", "list", "Pa", "zero force, p_A + p_B = p_S", "[p_A, p_B]", "hydraulic"},
-    {"seal_friction", "map", "–", "none", "as for the pneumatic compensator", "hydraulic"},
-    {"valve", "map", "–", "required", "servo valve", "hydraulic"},
-    {"max_speed", "number", "m/s", "K √((p_S − p_T)/2) / A_A", "largest stroke speed asked for", "hydraulic"},
-};
-
-constexpr KeySpec controller_keys[] = {
-    {"kp", "number", "N/m / 1/s", "0", "proportional gain"},
-    {"ki", "number", "N/(m·s) / 1/s²", "0", "integral gain"},
-    {"kd", "number", "N·s/m / –", "0", "derivative gain"},
-    {"tracking_time", "number", "s", "√(kd/ki), or kp/ki", "anti-windup time constant"},
-    {"velocity_feedforward", "number", "N·s/m / –", "0", "K_v"},
-    {"acceleration_feedforward", "number", "N·s²/m / s", "0", "K_a; needs measurement.mru"},
-    {"centring_time", "number", "s", "none", "stroke centring time constant"},
-    {"centre_stroke", "number", "m", "0", "s_c"},
-};
-
-constexpr KeySpec measurement_keys[] = {
-    {"controlled_point", "map", "–", "the moving side (joint form: the child body's reference point)",
-     "the point whose heave is held"},
-    {"mru", "map", "–", "none", "measure through an MRU"},
-};
-
 constexpr KeySpec solver_keys[] = {
     {"integrator", "choice", "–", "`ida`", "rk4, dopri5, verner6, fehlberg8, ida, hht"},
     {"t_start", "number", "s", "0", "start time"},
@@ -162,64 +123,6 @@ constexpr KeySpec coupler_keys[] = {
     {"ratio", "number", "–", "1", "q_a = ratio q_b + offset"},
     {"offset", "number", "rad or m", "0", "offset"},
     {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec stroke_keys[] = {
-    {"joint", "text", "–", "one of joint, base and moving", "joint form: a prismatic joint"},
-    {"base", "map", "–", "one of joint, base and moving", "bodies form: `{body, point}` of the base"},
-    {"moving", "map", "–", "required with base", "bodies form: `{body, point}` of the moving side"},
-    {"axis", "vector", "–", "`[0, 0, 1]`", "bodies form: unit axis, base body frame"},
-    {"mid_stroke", "number", "m", "0", "q or axial distance at s = 0"},
-};
-
-constexpr KeySpec end_stops_keys[] = {
-    {"lower", "number", "m", "none", "stroke of the lower stop"},
-    {"upper", "number", "m", "none", "stroke of the upper stop (> lower)"},
-    {"stiffness", "number", "N/m", "1e8", "stop stiffness (> 0)"},
-    {"damping", "number", "N·s/m", "1e6", "stop damping (≥ 0)"},
-};
-
-constexpr KeySpec seal_friction_keys[] = {
-    {"coulomb", "number", "N", "0", "F_c"},
-    {"viscous", "number", "N·s/m", "0", "c_v"},
-    {"smoothing_speed", "number", "m/s", "0.01", "v_s"},
-};
-
-constexpr KeySpec cooling_keys[] = {
-    {"time_constant", "number", "s", "required", "τ of Newton cooling"},
-    {"wall_temperature", "number", "K", "`initial_temperature`", "T_wall"},
-};
-
-constexpr KeySpec piping_keys[] = {
-    {"length", "number", "m", "required", "L"},
-    {"bore", "number", "m", "required", "d"},
-    {"viscosity", "number", "Pa·s", "0.05", "μ"},
-    {"density", "number", "kg/m³", "870", "ρ of the oil"},
-    {"loss_coefficient", "number", "–", "0", "ζ of the fittings"},
-};
-
-constexpr KeySpec valve_keys[] = {
-    {"rated_flow", "number", "m³/s", "required", "Q_N at full opening and the rated drop"},
-    {"rated_pressure_drop", "number", "Pa", "3.5e6", "Δp_N per land"},
-    {"natural_frequency", "number", "rad/s", "2π·30", "ω_v of the spool"},
-    {"damping", "number", "–", "0.7", "ζ_v of the spool"},
-    {"transition_pressure", "number", "Pa", "1e5", "laminar region of the orifice law"},
-    {"underlap", "number", "–", "0", "opening of every land at null, 0 ≤ x_u < 1"},
-};
-
-constexpr KeySpec mru_keys[] = {
-    {"corner_period", "number", "s", "100", "T_c of the high-pass filter"},
-    {"damping", "number", "–", "0.7071", "ζ of the filter"},
-    {"lag", "number", "s", "0.01", "τ of the output lag"},
-};
-
-constexpr KeySpec heave_estimate_keys[] = {
-    {"pontoon_bottom_area", "number", "m²", "required", "A_pb"},
-    {"waterplane_area", "number", "m²", "required", "A_wp ≤ A_pb"},
-    {"keel_depth", "number", "m", "required", "d_keel"},
-    {"pontoon_top_depth", "number", "m", "required", "d_top < d_keel"},
-    {"added_mass", "number", "kg", "required", "A33"},
-    {"added_mass_depth", "number", "m", "required", "d_a"},
 };
 
 constexpr KeySpec frame_keys[] = {
@@ -266,28 +169,13 @@ constexpr KeySpec limits_keys[] = {
     {"damping", "number", "N·s/m or N·m·s/rad", "0", "stop damping (≥ 0)"},
 };
 
-constexpr KeySpec body_point_keys[] = {
-    {"body", "text", "–", "required", "body name or `ground`"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "point in the body frame"},
-};
-
-constexpr KeySpec polytropic_exponent_keys[] = {
-    {"compression", "number", "–", "required", "n_c, 1 ≤ n ≤ 5/3"},
-    {"expansion", "number", "–", "required", "n_e, 1 ≤ n ≤ 5/3"},
-};
-
-constexpr KeySpec stroke_range_keys[] = {
-    {"lower", "number", "m", "required", "lower end of the cylinder stroke"},
-    {"upper", "number", "m", "required", "upper end (> lower)"},
-};
-
 constexpr KeySpec ramp_keys[] = {
     {"kind", "choice", "–", "required", "`cosine`, `tanh` or `none`"},
     {"duration", "number", "s", "required unless `kind: none`", "t_r (> 0)"},
 };
 
-/// The sections of everything but the force kinds, whose keys the kinds hold
-/// (app/forces/, through the registry).
+/// The sections of everything but the force kinds, whose keys (and nested sections) the
+/// kinds hold (app/forces/, through the registry).
 constexpr SchemaSection fixed_sections[] = {
     {"top-level", root_keys},
     {"environment", environment_keys},
@@ -304,20 +192,6 @@ constexpr SchemaSection fixed_sections[] = {
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
-    {"heave_estimate", heave_estimate_keys},
-    {"stroke", stroke_keys},
-    {"body_point", body_point_keys},
-    {"polytropic_exponent", polytropic_exponent_keys},
-    {"end_stops", end_stops_keys},
-    {"seal_friction", seal_friction_keys},
-    {"cooling", cooling_keys},
-    {"piping", piping_keys},
-    {"actuator", actuator_keys},
-    {"stroke_range", stroke_range_keys},
-    {"valve", valve_keys},
-    {"controller", controller_keys},
-    {"measurement", measurement_keys},
-    {"mru", mru_keys},
     {"solver", solver_keys},
     {"output", output_keys},
 };
@@ -336,7 +210,13 @@ bool in_form(std::string_view forms, std::string_view form) {
 std::span<const SchemaSection> case_schema() {
   static const std::vector<SchemaSection> sections = [] {
     std::vector<SchemaSection> all(std::begin(fixed_sections), std::end(fixed_sections));
-    for (const ForceKind& kind : force_kinds()) all.push_back({kind.type, kind.keys()});
+    for (const ForceKind& kind : force_kinds()) {
+      all.push_back({kind.type, kind.keys()});
+      // A kind's nested sections; those two kinds share (a compensator's stroke) once.
+      for (const SchemaSection& section : kind.sub_sections())
+        if (std::none_of(all.begin(), all.end(), [&](const SchemaSection& s) { return s.name == section.name; }))
+          all.push_back(section);
+    }
     return all;
   }();
   return sections;

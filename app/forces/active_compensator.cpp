@@ -18,6 +18,65 @@ constexpr KeySpec active_keys[] = {
     {"measurement", "map", "–", "none", "controlled point or MRU"},
 };
 
+constexpr KeySpec actuator_keys[] = {
+    {"type", "choice", "–", "required", "force or hydraulic"},
+    {"time_constant", "number", "s", "0.1", "first-order lag", "force"},
+    {"max_force", "number", "N", "3.9e5", "saturation", "force"},
+    {"max_rate", "number", "N/s", "none", "rate limit", "force"},
+    {"piston_area", "number", "m²", "required", "A_A", "hydraulic"},
+    {"annulus_area", "number", "m²", "required", "A_B", "hydraulic"},
+    {"volume_a", "number", "m³", "required", "chamber A volume at mid-stroke", "hydraulic"},
+    {"volume_b", "number", "m³", "required", "chamber B volume at mid-stroke", "hydraulic"},
+    {"stroke_range", "map", "m", "`{lower: 0, upper: 0}`", "the cylinder's stroke", "hydraulic"},
+    {"bulk_modulus", "number", "Pa", "1e9", "effective beta", "hydraulic"},
+    {"internal_leakage", "number", "m³/(s·Pa)", "0", "cross-piston leakage", "hydraulic"},
+    {"external_leakage", "number", "m³/(s·Pa)", "0", "leakage to tank", "hydraulic"},
+    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod cross-section", "hydraulic"},
+    {"supply_pressure", "number", "Pa", "required", "constant supply pressure", "hydraulic"},
+    {"tank_pressure", "number", "Pa", "2e5", "return pressure", "hydraulic"},
+    {"initial_pressures", "list", "Pa", "zero force, p_A + p_B = p_S", "[p_A, p_B]", "hydraulic"},
+    {"seal_friction", "map", "–", "none", "as for the pneumatic compensator", "hydraulic"},
+    {"valve", "map", "–", "required", "servo valve", "hydraulic"},
+    {"max_speed", "number", "m/s", "K √((p_S − p_T)/2) / A_A", "largest stroke speed asked for", "hydraulic"},
+};
+
+constexpr KeySpec stroke_range_keys[] = {
+    {"lower", "number", "m", "required", "lower end of the cylinder stroke"},
+    {"upper", "number", "m", "required", "upper end (> lower)"},
+};
+
+constexpr KeySpec valve_keys[] = {
+    {"rated_flow", "number", "m³/s", "required", "Q_N at full opening and the rated drop"},
+    {"rated_pressure_drop", "number", "Pa", "3.5e6", "Δp_N per land"},
+    {"natural_frequency", "number", "rad/s", "2π·30", "ω_v of the spool"},
+    {"damping", "number", "–", "0.7", "ζ_v of the spool"},
+    {"transition_pressure", "number", "Pa", "1e5", "laminar region of the orifice law"},
+    {"underlap", "number", "–", "0", "opening of every land at null, 0 ≤ x_u < 1"},
+};
+
+constexpr KeySpec controller_keys[] = {
+    {"kp", "number", "N/m / 1/s", "0", "proportional gain"},
+    {"ki", "number", "N/(m·s) / 1/s²", "0", "integral gain"},
+    {"kd", "number", "N·s/m / –", "0", "derivative gain"},
+    {"tracking_time", "number", "s", "√(kd/ki), or kp/ki", "anti-windup time constant"},
+    {"velocity_feedforward", "number", "N·s/m / –", "0", "K_v"},
+    {"acceleration_feedforward", "number", "N·s²/m / s", "0", "K_a; needs measurement.mru"},
+    {"centring_time", "number", "s", "none", "stroke centring time constant"},
+    {"centre_stroke", "number", "m", "0", "s_c"},
+};
+
+constexpr KeySpec measurement_keys[] = {
+    {"controlled_point", "map", "–", "the moving side (joint form: the child body's reference point)",
+     "the point whose heave is held"},
+    {"mru", "map", "–", "none", "measure through an MRU"},
+};
+
+constexpr KeySpec mru_keys[] = {
+    {"corner_period", "number", "s", "100", "T_c of the high-pass filter"},
+    {"damping", "number", "–", "0.7071", "ζ of the filter"},
+    {"lag", "number", "s", "0.01", "τ of the output lag"},
+};
+
 void read_force_actuator(const NodeReader& reader, ForceActuatorParameters& a) {
   reader.expect_section("actuator", "force");
   a.time_constant = non_negative_or(reader, "time_constant", a.time_constant);
@@ -94,6 +153,21 @@ void read_hydraulic_actuator(const NodeReader& reader, HydraulicActuatorParamete
 }  // namespace
 
 std::span<const KeySpec> ActiveCompensatorDefinition::keys() { return active_keys; }
+
+std::span<const SchemaSection> ActiveCompensatorDefinition::sub_sections() {
+  static const SchemaSection sections[] = {
+      {"stroke", stroke_keys()},
+      {"body_point", body_point_keys()},
+      {"actuator", actuator_keys},
+      {"stroke_range", stroke_range_keys},
+      {"seal_friction", seal_friction_keys()},
+      {"valve", valve_keys},
+      {"controller", controller_keys},
+      {"measurement", measurement_keys},
+      {"mru", mru_keys},
+  };
+  return sections;
+}
 
 ActiveCompensatorDefinition ActiveCompensatorDefinition::read(const NodeReader& item, const CaseDefinition&) {
   ActiveCompensatorDefinition def;

@@ -13,6 +13,7 @@ struct ActiveCompensatorDefinition {
   static constexpr std::string_view type = "active_compensator";
   static constexpr BuildStage stage = BuildStage::compensators;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections();
   /// Checks every parameter that can be checked without the model.
   static ActiveCompensatorDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Resolves the stroke and the controlled point on the assembled initial state, takes

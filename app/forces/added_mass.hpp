@@ -11,6 +11,7 @@ struct AddedMassDefinition {
   static constexpr std::string_view type = "added_mass";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static AddedMassDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Adds A to the body's added inertia.
   void read_data(const std::string& name, const CaseDefinition& definition, HydroData& data) const;

@@ -7,6 +7,32 @@
 #include "app/scene/scene_build_context.hpp"
 
 namespace heavesim {
+namespace {
+
+constexpr KeySpec stroke_table[] = {
+    {"joint", "text", "–", "one of joint, base and moving", "joint form: a prismatic joint"},
+    {"base", "map", "–", "one of joint, base and moving", "bodies form: `{body, point}` of the base"},
+    {"moving", "map", "–", "required with base", "bodies form: `{body, point}` of the moving side"},
+    {"axis", "vector", "–", "`[0, 0, 1]`", "bodies form: unit axis, base body frame"},
+    {"mid_stroke", "number", "m", "0", "q or axial distance at s = 0"},
+};
+
+constexpr KeySpec body_point_table[] = {
+    {"body", "text", "–", "required", "body name or `ground`"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "point in the body frame"},
+};
+
+constexpr KeySpec seal_friction_table[] = {
+    {"coulomb", "number", "N", "0", "F_c"},
+    {"viscous", "number", "N·s/m", "0", "c_v"},
+    {"smoothing_speed", "number", "m/s", "0.01", "v_s"},
+};
+
+}  // namespace
+
+std::span<const KeySpec> stroke_keys() { return stroke_table; }
+std::span<const KeySpec> body_point_keys() { return body_point_table; }
+std::span<const KeySpec> seal_friction_keys() { return seal_friction_table; }
 
 bool StrokeDefinition::same_as(const StrokeDefinition& other) const {
   return joint_form() ? joint == other.joint

@@ -29,6 +29,11 @@ struct StrokeDefinition {
   bool same_as(const StrokeDefinition& other) const;
 };
 
+// The key tables of the sections both compensators nest (docs/case-format.md).
+std::span<const KeySpec> stroke_keys();
+std::span<const KeySpec> body_point_keys();
+std::span<const KeySpec> seal_friction_keys();
+
 // Readers of the compensators' shared keys (InputError naming the key).
 double positive_or(const NodeReader& item, const std::string& key, double default_value);
 double non_negative_or(const NodeReader& item, const std::string& key, double default_value);

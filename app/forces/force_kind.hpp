@@ -4,6 +4,8 @@
 //   static constexpr std::string_view type;   // its `type` value and key-table section
 //   static constexpr BuildStage stage;        // when the scene builds it (below)
 //   static std::span<const KeySpec> keys();   // its keys (docs/case-format.md table)
+//   static std::span<const SchemaSection> sub_sections();  // its nested sections
+//                                             // (e.g. a compensator's `stroke`), maybe none
 //   static Kind read(const NodeReader& item, const CaseDefinition& definition);
 //                                             // forces[i], its name already read;
 //                                             // `definition`: the case read so far

@@ -22,7 +22,8 @@ template <std::size_t... I>
 constexpr auto registered_kinds(std::index_sequence<I...>) {
   return std::array<ForceKind, sizeof...(I)>{
       ForceKind{std::variant_alternative_t<I, ForceKindDefinition>::type,
-                &std::variant_alternative_t<I, ForceKindDefinition>::keys, &read_kind<I>}...};
+                &std::variant_alternative_t<I, ForceKindDefinition>::keys,
+                &std::variant_alternative_t<I, ForceKindDefinition>::sub_sections, &read_kind<I>}...};
 }
 
 constexpr auto kinds = registered_kinds(std::make_index_sequence<std::variant_size_v<ForceKindDefinition>>{});

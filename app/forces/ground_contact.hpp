@@ -14,6 +14,7 @@ struct GroundContactDefinition {
   /// the preload.
   static constexpr BuildStage stage = BuildStage::on_assembled;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static GroundContactDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

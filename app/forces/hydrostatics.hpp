@@ -12,6 +12,7 @@ struct HydrostaticsDefinition {
   static constexpr std::string_view type = "hydrostatics";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static HydrostaticsDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Reads the .hst or the mesh (or takes the given C).
   void read_data(const std::string& name, const CaseDefinition& definition, HydroData& data) const;

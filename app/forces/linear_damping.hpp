@@ -9,6 +9,7 @@ struct LinearDampingDefinition {
   static constexpr std::string_view type = "linear_damping";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static LinearDampingDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

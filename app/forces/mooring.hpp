@@ -9,6 +9,7 @@ struct MooringDefinition {
   static constexpr std::string_view type = "mooring";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static MooringDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

@@ -26,6 +26,31 @@ constexpr KeySpec pneumatic_keys[] = {
     {"end_stops", "map", "–", "`{lower: -3.81, upper: 3.81, stiffness: 1e8, damping: 1e6}`", "one-sided end stops"},
 };
 
+constexpr KeySpec polytropic_exponent_keys[] = {
+    {"compression", "number", "–", "required", "n_c, 1 ≤ n ≤ 5/3"},
+    {"expansion", "number", "–", "required", "n_e, 1 ≤ n ≤ 5/3"},
+};
+
+constexpr KeySpec end_stops_keys[] = {
+    {"lower", "number", "m", "none", "stroke of the lower stop"},
+    {"upper", "number", "m", "none", "stroke of the upper stop (> lower)"},
+    {"stiffness", "number", "N/m", "1e8", "stop stiffness (> 0)"},
+    {"damping", "number", "N·s/m", "1e6", "stop damping (≥ 0)"},
+};
+
+constexpr KeySpec cooling_keys[] = {
+    {"time_constant", "number", "s", "required", "τ of Newton cooling"},
+    {"wall_temperature", "number", "K", "`initial_temperature`", "T_wall"},
+};
+
+constexpr KeySpec piping_keys[] = {
+    {"length", "number", "m", "required", "L"},
+    {"bore", "number", "m", "required", "d"},
+    {"viscosity", "number", "Pa·s", "0.05", "μ"},
+    {"density", "number", "kg/m³", "870", "ρ of the oil"},
+    {"loss_coefficient", "number", "–", "0", "ζ of the fittings"},
+};
+
 EndStops read_end_stops(const NodeReader& reader) {
   reader.expect_section("end_stops");
   EndStops stops;
@@ -42,6 +67,19 @@ EndStops read_end_stops(const NodeReader& reader) {
 }  // namespace
 
 std::span<const KeySpec> PneumaticCompensatorDefinition::keys() { return pneumatic_keys; }
+
+std::span<const SchemaSection> PneumaticCompensatorDefinition::sub_sections() {
+  static const SchemaSection sections[] = {
+      {"stroke", stroke_keys()},
+      {"body_point", body_point_keys()},
+      {"polytropic_exponent", polytropic_exponent_keys},
+      {"end_stops", end_stops_keys},
+      {"seal_friction", seal_friction_keys()},
+      {"cooling", cooling_keys},
+      {"piping", piping_keys},
+  };
+  return sections;
+}
 
 PneumaticCompensatorDefinition PneumaticCompensatorDefinition::read(const NodeReader& item, const CaseDefinition&) {
   PneumaticCompensatorDefinition def;

@@ -10,6 +10,7 @@ struct PneumaticCompensatorDefinition {
   static constexpr std::string_view type = "pneumatic_compensator";
   static constexpr BuildStage stage = BuildStage::compensators;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections();
   /// Checks every parameter that can be checked without the model.
   static PneumaticCompensatorDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Resolves the stroke on the assembled initial state, checks that it starts between

@@ -10,6 +10,7 @@ struct PointForceDefinition {
   static constexpr std::string_view type = "point_force";
   static constexpr BuildStage stage = BuildStage::on_model;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static PointForceDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

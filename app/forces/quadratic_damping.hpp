@@ -10,6 +10,7 @@ struct QuadraticDampingDefinition {
   static constexpr std::string_view type = "quadratic_damping";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static QuadraticDampingDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

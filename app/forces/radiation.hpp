@@ -11,6 +11,7 @@ struct RadiationDefinition {
   static constexpr std::string_view type = "radiation";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static RadiationDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Reads the file; adds A(inf) to the body's added inertia (one radiation element per body).
   void read_data(const std::string& name, const CaseDefinition& definition, HydroData& data) const;

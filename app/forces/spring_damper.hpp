@@ -10,6 +10,7 @@ struct SpringDamperDefinition {
   static constexpr std::string_view type = "spring_damper";
   static constexpr BuildStage stage = BuildStage::on_model;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections() { return {}; }
   static SpringDamperDefinition read(const NodeReader& item, const CaseDefinition& definition);
   void build(const std::string& name, SceneBuildContext& context) const;
 

@@ -19,9 +19,25 @@ constexpr KeySpec wave_excitation_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
+constexpr KeySpec heave_estimate_keys[] = {
+    {"pontoon_bottom_area", "number", "m²", "required", "A_pb"},
+    {"waterplane_area", "number", "m²", "required", "A_wp ≤ A_pb"},
+    {"keel_depth", "number", "m", "required", "d_keel"},
+    {"pontoon_top_depth", "number", "m", "required", "d_top < d_keel"},
+    {"added_mass", "number", "kg", "required", "A33"},
+    {"added_mass_depth", "number", "m", "required", "d_a"},
+};
+
 }  // namespace
 
 std::span<const KeySpec> WaveExcitationDefinition::keys() { return wave_excitation_keys; }
+
+std::span<const SchemaSection> WaveExcitationDefinition::sub_sections() {
+  static const SchemaSection sections[] = {
+      {"heave_estimate", heave_estimate_keys},
+  };
+  return sections;
+}
 
 WaveExcitationDefinition WaveExcitationDefinition::read(const NodeReader& item, const CaseDefinition& definition) {
   WaveExcitationDefinition def;

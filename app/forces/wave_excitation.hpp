@@ -13,6 +13,7 @@ struct WaveExcitationDefinition {
   static constexpr std::string_view type = "wave_excitation";
   static constexpr BuildStage stage = BuildStage::hydro;
   static std::span<const KeySpec> keys();
+  static std::span<const SchemaSection> sub_sections();
   static WaveExcitationDefinition read(const NodeReader& item, const CaseDefinition& definition);
   /// Reads the file, or evaluates the estimate at the sea's component frequencies.
   void read_data(const std::string& name, const CaseDefinition& definition, HydroData& data) const;
