@@ -5,11 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "app/case/control_definition.hpp"
 #include "app/case/hydro_definition.hpp"
 #include "app/case/input_error.hpp"
+#include "app/forces/force_kinds.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
-#include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "kernel/parameter_error.hpp"
@@ -29,22 +28,6 @@ struct SolverSettings {
   ForwardDynamicsMethod dynamics = ForwardDynamicsMethod::articulated_body;
   // integrator.constraint_tolerance: largest |Phi| accepted at assembly, after each
   // projection and at the end of an HHT step [m or rad].
-};
-
-/// A force element declared in `forces:`.
-struct ForceDefinition {
-  enum class Type { spring_damper, point_force, ground_contact };
-  std::string name;
-  Type type = Type::spring_damper;
-  std::string body_a, body_b;         // spring_damper ends; point_force: body_a
-  Vector3 point_a = Vector3::Zero();  // m, body a's frame
-  Vector3 point_b = Vector3::Zero();  // m, body b's frame
-  SpringDamperParameters spring;
-  Vector3 force_world = Vector3::Zero();  // N, point_force
-  /// ground_contact: the contact force [N] at the initial state; the surface is placed
-  /// preload / stiffness below the point's initial position (spring.stiffness,
-  /// spring.damping are k_f, c_f).
-  double preload = 0.0;
 };
 
 struct OutputSettings {
@@ -72,9 +55,7 @@ struct CaseDefinition {
   std::vector<DistanceConstraintDefinition> distance_constraints;
   std::vector<CouplerDefinition> couplers;
   std::vector<DriverDefinition> drivers;
-  std::vector<ForceDefinition> forces;
-  std::vector<CompensatorDefinition> compensators;  // from forces: (control_reader.cpp)
-  std::vector<HydroForceDefinition> hydro_forces;   // from forces: (hydro_reader.cpp)
+  std::vector<ForceDefinition> forces;              // from forces:, in declaration order (app/forces/)
   WaterDefinition water;                            // environment.water_density, water_depth
   WaveDefinition waves;                             // waves: (none unless declared)
   std::map<std::string, JointInitialState> initial_states;  // by joint name

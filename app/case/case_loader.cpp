@@ -7,7 +7,7 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
-#include "app/case/force_kinds.hpp"
+#include "app/forces/force_registry.hpp"
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"

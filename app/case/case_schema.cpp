@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/forces/force_registry.hpp"
+
 namespace heavesim {
 namespace {
 
@@ -81,176 +83,6 @@ constexpr KeySpec driver_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
-constexpr KeySpec spring_damper_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "spring_damper"},
-    {"body_a", "text", "–", "required", "first end's body (or ground)"},
-    {"point_a", "vector", "m", "`[0, 0, 0]`", "first end, body a's frame"},
-    {"body_b", "text", "–", "required", "second end's body (or ground)"},
-    {"point_b", "vector", "m", "`[0, 0, 0]`", "second end, body b's frame"},
-    {"stiffness", "number", "N/m", "0", "k"},
-    {"damping", "number", "N s/m", "0", "c"},
-    {"rest_length", "number", "m", "required", "l0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec point_force_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "point_force"},
-    {"body", "text", "–", "required", "the loaded body"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "the loaded point, body frame"},
-    {"force", "vector", "N", "required", "constant force, world frame"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec ground_contact_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "ground_contact"},
-    {"body", "text", "–", "required", "the body that touches the ground"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "the contact point, body frame"},
-    {"stiffness", "number", "N/m", "required", "k_f > 0"},
-    {"damping", "number", "N s/m", "0", "c_f"},
-    {"preload", "number", "N", "0", "contact force at the initial state"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec hydrostatics_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "hydrostatics"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"hst", "text", "–", "one of hst, mesh, stiffness", "WAMIT .hst, BEMIO .h5 or Capytaine .nc file"},
-    {"mesh", "text", "–", "one of hst, mesh, stiffness", ".gdf or .stl hull (nonlinear)"},
-    {"stiffness", "matrix", "N/m, N, N m/rad", "one of hst, mesh, stiffness", "C given directly"},
-    {"displaced_volume", "number", "m³", "buoyancy = weight", "V for f0 = rho g V"},
-    {"hst_includes_gravity", "boolean", "–", "`false`", "the .hst holds WAMIT's gravity terms"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec radiation_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "radiation"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"file", "text", "–", "required", "WAMIT .1, BEMIO .h5 or Capytaine .nc file"},
-    {"memory", "choice", "–", "`state_space`", "state_space or convolution"},
-    {"state_space_order", "number", "–", "12", "states per realised mode pair, 2 .. 24"},
-    {"kernel_duration", "number", "s", "60", "length of K(t)"},
-    {"kernel_step", "number", "s", "0.05", "sample step of K(t)"},
-    {"modes", "list", "–", "all", "WAMIT modes 1..6 whose memory is kept"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec wave_excitation_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "wave_excitation"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"file", "text", "–", "one of file, heave_estimate", "WAMIT .3, BEMIO .h5 or Capytaine .nc file"},
-    {"heave_estimate", "map", "–", "one of file, heave_estimate", "semi-submersible hand estimate"},
-    {"length_scale", "number", "m", "1", "WAMIT ULEN"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec linear_damping_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "linear_damping"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"damping", "matrix", "N s/m, N s, N m s/rad", "required", "B, 6 x 6 or its diagonal"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec quadratic_damping_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "quadratic_damping"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"coefficients", "vector", "N s²/m², N m s²/rad²", "required", "b_i >= 0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec added_mass_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "added_mass"},
-    {"body", "text", "–", "required", "the floating body"},
-    {"matrix", "matrix", "kg, kg m, kg m²", "required", "A, 6 x 6 or its diagonal"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec mooring_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "mooring"},
-    {"body", "text", "–", "required", "the moored body"},
-    {"stiffness", "matrix", "N/m, N, N m/rad", "required", "K, 6 x 6 or its diagonal"},
-    {"pretension", "vector", "N, N m", "0", "f0"},
-    {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec pneumatic_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "pneumatic_compensator"},
-    {"description", "text", "–", "–", "free text"},
-    {"stroke", "map", "–", "required", "where it acts"},
-    {"piston_area", "number", "m²", "required", "A"},
-    {"gas_volume", "number", "m³", "required", "V0 at mid-stroke"},
-    {"gas_pressure", "number or balance", "Pa", "`balance`", "absolute gas pressure at mid-stroke"},
-    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod side"},
-    {"polytropic_exponent", "number or map", "–", "1.4", "n, or compression and expansion"},
-    {"hysteresis_speed", "number", "m/s", "0.01", "width of the n_c/n_e switch"},
-    {"initial_temperature", "number", "K", "288.15", "T0"},
-    {"cooling", "map", "–", "none", "Newton cooling to the vessel walls"},
-    {"piping", "map", "–", "none", "pipe losses"},
-    {"seal_friction", "map", "–", "none", "Coulomb and viscous seal friction"},
-    {"end_stops", "map", "–", "`{lower: -3.81, upper: 3.81, stiffness: 1e8, damping: 1e6}`", "one-sided end stops"},
-};
-
-constexpr KeySpec active_keys[] = {
-    {"name", "text", "–", "required", "unique"},
-    {"type", "choice", "–", "required", "active_compensator"},
-    {"description", "text", "–", "–", "free text"},
-    {"stroke", "map", "–", "required", "where it acts"},
-    {"actuator", "map", "–", "required", "force or hydraulic actuator"},
-    {"controller", "map", "–", "required", "PID and feed-forward"},
-    {"measurement", "map", "–", "none", "controlled point or MRU"},
-};
-
-constexpr KeySpec actuator_keys[] = {
-    {"type", "choice", "–", "required", "force or hydraulic"},
-    {"time_constant", "number", "s", "0.1", "first-order lag", "force"},
-    {"max_force", "number", "N", "3.9e5", "saturation", "force"},
-    {"max_rate", "number", "N/s", "none", "rate limit", "force"},
-    {"piston_area", "number", "m²", "required", "A_A", "hydraulic"},
-    {"annulus_area", "number", "m²", "required", "A_B", "hydraulic"},
-    {"volume_a", "number", "m³", "required", "chamber A volume at mid-stroke", "hydraulic"},
-    {"volume_b", "number", "m³", "required", "chamber B volume at mid-stroke", "hydraulic"},
-    {"stroke_range", "map", "m", "`{lower: 0, upper: 0}`", "the cylinder's stroke", "hydraulic"},
-    {"bulk_modulus", "number", "Pa", "1e9", "effective beta", "hydraulic"},
-    {"internal_leakage", "number", "m³/(s·Pa)", "0", "cross-piston leakage", "hydraulic"},
-    {"external_leakage", "number", "m³/(s·Pa)", "0", "leakage to tank", "hydraulic"},
-    {"atmospheric_pressure", "number", "Pa", "101325", "on the rod cross-section", "hydraulic"},
-    {"supply_pressure", "number", "Pa", "required", "constant supply pressure", "hydraulic"},
-    {"tank_pressure", "number", "Pa", "2e5", "return pressure", "hydraulic"},
-    {"initial_pressures", "list", "Pa", "zero force, p_A + p_B = p_S", "[p_A, p_B]", "hydraulic"},
-    {"seal_friction", "map", "–", "none", "as for the pneumatic compensator", "hydraulic"},
-    {"valve", "map", "–", "required", "servo valve", "hydraulic"},
-    {"max_speed", "number", "m/s", "K √((p_S − p_T)/2) / A_A", "largest stroke speed asked for", "hydraulic"},
-};
-
-constexpr KeySpec controller_keys[] = {
-    {"kp", "number", "N/m / 1/s", "0", "proportional gain"},
-    {"ki", "number", "N/(m·s) / 1/s²", "0", "integral gain"},
-    {"kd", "number", "N·s/m / –", "0", "derivative gain"},
-    {"tracking_time", "number", "s", "√(kd/ki), or kp/ki", "anti-windup time constant"},
-    {"velocity_feedforward", "number", "N·s/m / –", "0", "K_v"},
-    {"acceleration_feedforward", "number", "N·s²/m / s", "0", "K_a; needs measurement.mru"},
-    {"centring_time", "number", "s", "none", "stroke centring time constant"},
-    {"centre_stroke", "number", "m", "0", "s_c"},
-};
-
-constexpr KeySpec measurement_keys[] = {
-    {"controlled_point", "map", "–", "the moving side (joint form: the child body's reference point)",
-     "the point whose heave is held"},
-    {"mru", "map", "–", "none", "measure through an MRU"},
-};
-
 constexpr KeySpec solver_keys[] = {
     {"integrator", "choice", "–", "`ida`", "rk4, dopri5, verner6, fehlberg8, ida, hht"},
     {"t_start", "number", "s", "0", "start time"},
@@ -291,64 +123,6 @@ constexpr KeySpec coupler_keys[] = {
     {"ratio", "number", "–", "1", "q_a = ratio q_b + offset"},
     {"offset", "number", "rad or m", "0", "offset"},
     {"description", "text", "–", "–", "free text"},
-};
-
-constexpr KeySpec stroke_keys[] = {
-    {"joint", "text", "–", "one of joint, base and moving", "joint form: a prismatic joint"},
-    {"base", "map", "–", "one of joint, base and moving", "bodies form: `{body, point}` of the base"},
-    {"moving", "map", "–", "required with base", "bodies form: `{body, point}` of the moving side"},
-    {"axis", "vector", "–", "`[0, 0, 1]`", "bodies form: unit axis, base body frame"},
-    {"mid_stroke", "number", "m", "0", "q or axial distance at s = 0"},
-};
-
-constexpr KeySpec end_stops_keys[] = {
-    {"lower", "number", "m", "none", "stroke of the lower stop"},
-    {"upper", "number", "m", "none", "stroke of the upper stop (> lower)"},
-    {"stiffness", "number", "N/m", "1e8", "stop stiffness (> 0)"},
-    {"damping", "number", "N·s/m", "1e6", "stop damping (≥ 0)"},
-};
-
-constexpr KeySpec seal_friction_keys[] = {
-    {"coulomb", "number", "N", "0", "F_c"},
-    {"viscous", "number", "N·s/m", "0", "c_v"},
-    {"smoothing_speed", "number", "m/s", "0.01", "v_s"},
-};
-
-constexpr KeySpec cooling_keys[] = {
-    {"time_constant", "number", "s", "required", "τ of Newton cooling"},
-    {"wall_temperature", "number", "K", "`initial_temperature`", "T_wall"},
-};
-
-constexpr KeySpec piping_keys[] = {
-    {"length", "number", "m", "required", "L"},
-    {"bore", "number", "m", "required", "d"},
-    {"viscosity", "number", "Pa·s", "0.05", "μ"},
-    {"density", "number", "kg/m³", "870", "ρ of the oil"},
-    {"loss_coefficient", "number", "–", "0", "ζ of the fittings"},
-};
-
-constexpr KeySpec valve_keys[] = {
-    {"rated_flow", "number", "m³/s", "required", "Q_N at full opening and the rated drop"},
-    {"rated_pressure_drop", "number", "Pa", "3.5e6", "Δp_N per land"},
-    {"natural_frequency", "number", "rad/s", "2π·30", "ω_v of the spool"},
-    {"damping", "number", "–", "0.7", "ζ_v of the spool"},
-    {"transition_pressure", "number", "Pa", "1e5", "laminar region of the orifice law"},
-    {"underlap", "number", "–", "0", "opening of every land at null, 0 ≤ x_u < 1"},
-};
-
-constexpr KeySpec mru_keys[] = {
-    {"corner_period", "number", "s", "100", "T_c of the high-pass filter"},
-    {"damping", "number", "–", "0.7071", "ζ of the filter"},
-    {"lag", "number", "s", "0.01", "τ of the output lag"},
-};
-
-constexpr KeySpec heave_estimate_keys[] = {
-    {"pontoon_bottom_area", "number", "m²", "required", "A_pb"},
-    {"waterplane_area", "number", "m²", "required", "A_wp ≤ A_pb"},
-    {"keel_depth", "number", "m", "required", "d_keel"},
-    {"pontoon_top_depth", "number", "m", "required", "d_top < d_keel"},
-    {"added_mass", "number", "kg", "required", "A33"},
-    {"added_mass_depth", "number", "m", "required", "d_a"},
 };
 
 constexpr KeySpec frame_keys[] = {
@@ -395,27 +169,14 @@ constexpr KeySpec limits_keys[] = {
     {"damping", "number", "N·s/m or N·m·s/rad", "0", "stop damping (≥ 0)"},
 };
 
-constexpr KeySpec body_point_keys[] = {
-    {"body", "text", "–", "required", "body name or `ground`"},
-    {"point", "vector", "m", "`[0, 0, 0]`", "point in the body frame"},
-};
-
-constexpr KeySpec polytropic_exponent_keys[] = {
-    {"compression", "number", "–", "required", "n_c, 1 ≤ n ≤ 5/3"},
-    {"expansion", "number", "–", "required", "n_e, 1 ≤ n ≤ 5/3"},
-};
-
-constexpr KeySpec stroke_range_keys[] = {
-    {"lower", "number", "m", "required", "lower end of the cylinder stroke"},
-    {"upper", "number", "m", "required", "upper end (> lower)"},
-};
-
 constexpr KeySpec ramp_keys[] = {
     {"kind", "choice", "–", "required", "`cosine`, `tanh` or `none`"},
     {"duration", "number", "s", "required unless `kind: none`", "t_r (> 0)"},
 };
 
-constexpr SchemaSection sections[] = {
+/// The sections of everything but the force kinds, whose keys (and nested sections) the
+/// kinds hold (app/forces/, through the registry).
+constexpr SchemaSection fixed_sections[] = {
     {"top-level", root_keys},
     {"environment", environment_keys},
     {"waves", waves_keys},
@@ -431,32 +192,6 @@ constexpr SchemaSection sections[] = {
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
-    {"spring_damper", spring_damper_keys},
-    {"point_force", point_force_keys},
-    {"ground_contact", ground_contact_keys},
-    {"hydrostatics", hydrostatics_keys},
-    {"radiation", radiation_keys},
-    {"wave_excitation", wave_excitation_keys},
-    {"linear_damping", linear_damping_keys},
-    {"quadratic_damping", quadratic_damping_keys},
-    {"added_mass", added_mass_keys},
-    {"mooring", mooring_keys},
-    {"heave_estimate", heave_estimate_keys},
-    {"stroke", stroke_keys},
-    {"body_point", body_point_keys},
-    {"pneumatic_compensator", pneumatic_keys},
-    {"polytropic_exponent", polytropic_exponent_keys},
-    {"end_stops", end_stops_keys},
-    {"seal_friction", seal_friction_keys},
-    {"cooling", cooling_keys},
-    {"piping", piping_keys},
-    {"active_compensator", active_keys},
-    {"actuator", actuator_keys},
-    {"stroke_range", stroke_range_keys},
-    {"valve", valve_keys},
-    {"controller", controller_keys},
-    {"measurement", measurement_keys},
-    {"mru", mru_keys},
     {"solver", solver_keys},
     {"output", output_keys},
 };
@@ -472,10 +207,23 @@ bool in_form(std::string_view forms, std::string_view form) {
 
 }  // namespace
 
-std::span<const SchemaSection> case_schema() { return sections; }
+std::span<const SchemaSection> case_schema() {
+  static const std::vector<SchemaSection> sections = [] {
+    std::vector<SchemaSection> all(std::begin(fixed_sections), std::end(fixed_sections));
+    for (const ForceKind& kind : force_kinds()) {
+      all.push_back({kind.type, kind.keys()});
+      // A kind's nested sections; those two kinds share (a compensator's stroke) once.
+      for (const SchemaSection& section : kind.sub_sections())
+        if (std::none_of(all.begin(), all.end(), [&](const SchemaSection& s) { return s.name == section.name; }))
+          all.push_back(section);
+    }
+    return all;
+  }();
+  return sections;
+}
 
 std::span<const KeySpec> schema_keys(std::string_view section) {
-  for (const SchemaSection& s : sections)
+  for (const SchemaSection& s : case_schema())
     if (s.name == section) return s.keys;
   throw std::out_of_range("no schema section '" + std::string(section) + "'");
 }

@@ -26,7 +26,9 @@ struct SchemaSection {
   std::span<const KeySpec> keys;
 };
 
-/// Every section the schema describes, in document order.
+/// Every section the schema describes: the case's own in document order, then each force
+/// kind's (its keys and nested sections, held by the kind in app/forces/), in registry
+/// order.
 std::span<const SchemaSection> case_schema();
 
 /// The keys of one section (throws std::out_of_range for an unknown section: a

@@ -7,16 +7,13 @@
 
 namespace heavesim {
 
-CompensatorSummary::CompensatorSummary(const MultibodySystem& system, double evaluate_after)
+CompensatorSummary::CompensatorSummary(const MultibodySystem& system, const SummarisedElements& elements,
+                                       double evaluate_after)
     : system_(system), evaluate_after_(evaluate_after) {
-  const auto& elements = system.force_elements();
-  for (std::size_t e = 0; e < elements.size(); ++e) {
-    if (auto* pneumatic = dynamic_cast<const PneumaticCompensator*>(elements[e].get()))
-      passive_.push_back({pneumatic, system.state_offset(e), EndStopMonitor(pneumatic->parameters().end_stops)});
-    if (auto* active = dynamic_cast<const ActiveCompensator*>(elements[e].get()))
-      active_.push_back({active, system.state_offset(e)});
-    if (auto* contact = dynamic_cast<const GroundContact*>(elements[e].get())) contacts_.push_back({contact});
-  }
+  for (const auto& [pneumatic, index] : elements.pneumatic_compensators)
+    passive_.push_back({pneumatic, system.state_offset(index), EndStopMonitor(pneumatic->parameters().end_stops)});
+  for (const auto& [active, index] : elements.active_compensators) active_.push_back({active, system.state_offset(index)});
+  for (const auto& contact : elements.ground_contacts) contacts_.push_back({contact.element});
 }
 
 void CompensatorSummary::observe(double t, const VectorX& y) {

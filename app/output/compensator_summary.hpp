@@ -17,17 +17,16 @@
 
 #include "app/output/result_file.hpp"
 #include "app/output/running_statistics.hpp"
-#include "control/active/active_compensator.hpp"
-#include "control/pneumatic/pneumatic_compensator.hpp"
-#include "kernel/elements/ground_contact.hpp"
+#include "app/scene/element_handles.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
 
 class CompensatorSummary {
  public:
+  /// `elements`: the compensators and ground contacts of `system` (Scene::summarised);
   /// `evaluate_after` [s]: start of the efficiency window.
-  CompensatorSummary(const MultibodySystem& system, double evaluate_after);
+  CompensatorSummary(const MultibodySystem& system, const SummarisedElements& elements, double evaluate_after);
   /// Start of the evaluation window [s], and whether a sample at t [s] falls in it (the
   /// recorder's per-joint load statistics use the same window).
   double evaluate_after() const { return evaluate_after_; }

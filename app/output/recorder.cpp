@@ -43,7 +43,7 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* f
     : scene_(scene),
       file_(file),
       csv_(csv),
-      compensators_(*scene.system, definition.output.evaluate_after) {
+      compensators_(*scene.system, scene.summarised, definition.output.evaluate_after) {
   define_channels(definition);
   if (file_) {
     // HDF5 lists groups alphabetically; keep the model's (topological) order too.

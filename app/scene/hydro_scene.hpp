@@ -1,8 +1,11 @@
 #pragma once
-// Builds the case's hydrodynamic force elements (hydro/) on the model. Only what the
-// case declares is read and built.
+// The data of the case's hydrodynamic force elements (hydro/) and its sea, read before
+// the model is built; the elements themselves are built by their kinds (app/forces/).
+// Only what the case declares is read.
 #include <map>
 #include <memory>
+#include <set>
+#include <string>
 
 #include "app/case/case_definition.hpp"
 #include "hydro/bem/bem_data.hpp"
@@ -25,20 +28,21 @@ struct HydroData {
   /// The incident sea (no components when none is declared), one per scene, shared by
   /// the elements that record it.
   std::shared_ptr<const hydro::WaveTrain> waves;
+  std::set<std::string> radiating_bodies;  // one radiation element per body
+
+  /// Adds `added` [angular; linear, body frame origin, body axes] to the body's added
+  /// inertia: several elements add up.
+  void add_inertia(const std::string& body, const Matrix6& added) {
+    added_inertia.try_emplace(body, Matrix6::Zero()).first->second += added;
+  }
 };
-/// Also builds the sea, so that hydro's rules on it (wave_spectrum.hpp, wave_train.hpp,
-/// dispersion.hpp) are checked for every case that declares one.
+/// Builds the sea, so that hydro's rules on it (wave_spectrum.hpp, wave_train.hpp,
+/// dispersion.hpp) are checked for every case that declares one, then each force kind's
+/// data (its `read_data`, app/forces/), in declaration order.
 HydroData read_hydro_data(const CaseDefinition& definition);
 
 /// The incident sea of the case (empty when none is declared). A hydro ParameterError
 /// becomes an InputError at its `waves:` or `environment:` key.
 hydro::WaveTrain wave_train(const CaseDefinition& definition);
-
-/// Adds every hydro element of the case to `system`. Each one records its load on the
-/// body reference point under /forces/<name>/: force_x..z [N], moment_x..z [N m]
-/// (about the body frame origin, world axes), plus its own channels; wave excitation
-/// also the wave elevation at the body reference point. Throws InputError.
-void add_hydro_elements(const CaseDefinition& definition, const HydroData& data, const Model& model,
-                        MultibodySystem& system);
 
 }  // namespace heavesim

@@ -2,65 +2,23 @@
 
 #include <fmt/format.h>
 
-#include "app/scene/control_scene.hpp"
 #include "app/scene/hydro_scene.hpp"
 
+#include "app/scene/scene_build_context.hpp"
 #include "kernel/algorithms/kinematics.hpp"
-#include "kernel/elements/ground_contact.hpp"
-#include "kernel/elements/point_force.hpp"
-#include "kernel/elements/spring_damper.hpp"
 
 namespace heavesim {
 namespace {
 
-InputError force_error(const CaseDefinition& definition, const std::string& force, const std::string& field,
-                       const std::string& found, const std::string& expected) {
-  return definition.item_error(force, field, found, expected);
-}
-
-BodyPoint body_point(const CaseDefinition& definition, const Model& model, const ForceDefinition& force,
-                     const std::string& field, const std::string& body, const Vector3& point) {
-  if (body == ModelBuilder::ground_name) return {0, point};
-  if (model.link_index(body) < 0)
-    throw force_error(definition, force.name, field, "'" + body + "', which is not a body",
-                      "'ground' or the name of a body");
-  return BodyPoint::on_body(model, body, point);
-}
-
-void add_force_elements(const CaseDefinition& definition, const Model& model, MultibodySystem& system) {
-  for (const ForceDefinition& force : definition.forces) {
-    if (force.type == ForceDefinition::Type::ground_contact) continue;  // needs the initial state
-    if (force.type == ForceDefinition::Type::point_force) {
-      system.add_force_element(std::make_unique<PointForce>(
-          force.name, body_point(definition, model, force, "body", force.body_a, force.point_a), force.force_world));
-      continue;
-    }
-    const BodyPoint a = body_point(definition, model, force, "body_a", force.body_a, force.point_a);
-    const BodyPoint b = body_point(definition, model, force, "body_b", force.body_b, force.point_b);
-    if (a.link == b.link)
-      throw force_error(definition, force.name, "body_b", "both ends on '" + force.body_a + "'",
-                        "two different bodies");
-    system.add_force_element(std::make_unique<SpringDamper>(force.name, a, b, force.spring));
-  }
-}
-
-/// Ground contacts, once the initial configuration q0 is known: the surface sits
-/// preload / k below the point's initial height, so the contact starts carrying the
-/// preload (the weight on bit WOB0). Added before the compensators, whose balance
-/// pressure then counts the preload.
-void add_ground_contacts(const CaseDefinition& definition, const Model& model, MultibodySystem& system,
-                         const VectorX& q0) {
-  Data& data = system.mutable_data();
-  update_positions(model, data, q0);
-  for (const ForceDefinition& force : definition.forces) {
-    if (force.type != ForceDefinition::Type::ground_contact) continue;
-    const BodyPoint point = body_point(definition, model, force, "body", force.body_a, force.point_a);
-    if (point.link == 0)
-      throw force_error(definition, force.name, "body", "'ground'", "the name of the body that touches the ground");
-    GroundContactParameters parameters{force.spring.stiffness, force.spring.damping, 0.0};
-    parameters.surface_height = point.position_world(data).z() + force.preload / force.spring.stiffness;
-    system.add_force_element(std::make_unique<GroundContact>(force.name, point, parameters));
-  }
+/// Builds the case's force elements of one stage, in declaration order (BuildStage,
+/// app/forces/force_kind.hpp).
+void build_forces(BuildStage stage, SceneBuildContext& context) {
+  for (const ForceDefinition& force : context.definition.forces)
+    std::visit(
+        [&](const auto& kind) {
+          if (kind.stage == stage) kind.build(force.name, context);
+        },
+        force.kind);
 }
 
 /// Newton iterations from the user's state onto Phi = 0, J v = 0 (projection.hpp).
@@ -122,8 +80,10 @@ Scene build_scene(const CaseDefinition& definition) {
   settings.method = definition.solver.dynamics;
   settings.projection_tolerance = definition.solver.integrator.constraint_tolerance;
   scene.system = std::make_unique<MultibodySystem>(scene.model, settings);
-  add_force_elements(definition, model, *scene.system);
-  add_hydro_elements(definition, hydro_data, model, *scene.system);
+  SceneBuildContext context(definition, model, *scene.system, scene.summarised, hydro_data);
+  context.t_start = definition.solver.t_start;
+  build_forces(BuildStage::on_model, context);
+  build_forces(BuildStage::hydro, context);
 
   VectorX q0 = model.neutral_configuration();
   VectorX v0 = VectorX::Zero(model.nv);
@@ -145,8 +105,12 @@ Scene build_scene(const CaseDefinition& definition) {
     v0[joint.v_index + driver->coordinate] = start.velocity;
   }
   if (model.has_constraints()) scene.assembly = assemble(definition, model, scene.system->mutable_data(), q0, v0);
-  add_ground_contacts(definition, model, *scene.system, q0);
-  add_compensators(definition, model, *scene.system, definition.solver.t_start, q0);
+  // The elements built on the assembled state read its positions from the system's Data.
+  update_positions(model, scene.system->mutable_data(), q0);
+  context.set_initial_configuration(q0);
+  build_forces(BuildStage::on_assembled, context);
+  build_forces(BuildStage::compensators, context);
+  for (const auto& check : context.after_build) check();
   scene.initial_state = scene.system->initial_state(q0, v0);
   return scene;
 }

@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "app/case/case_definition.hpp"
+#include "app/scene/element_handles.hpp"
 #include "kernel/algorithms/projection.hpp"
 #include "kernel/system/multibody_system.hpp"
 
@@ -22,6 +23,7 @@ struct Scene {
   std::unique_ptr<MultibodySystem> system;
   VectorX initial_state;  // y0 = [q0; v0; element states], assembled when there are loops
   Assembly assembly;
+  SummarisedElements summarised;  // the elements the run summary reads
 };
 
 /// Builds the model, the force elements and the initial state; assembles closed

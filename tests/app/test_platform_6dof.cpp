@@ -60,9 +60,11 @@ Matrix6 frc_mass_matrix() {
 
 /// The matrix of a hydro element of the loaded case (mooring stiffness, viscous damping).
 Matrix6 case_matrix(const CaseDefinition& definition, const std::string& name) {
-  for (const HydroForceDefinition& force : definition.hydro_forces)
-    if (force.name == name)
-      return force.type == HydroForceDefinition::Type::linear_damping ? force.damping : force.stiffness;
+  for (const ForceDefinition& force : definition.forces) {
+    if (force.name != name) continue;
+    if (const auto* damping = std::get_if<LinearDampingDefinition>(&force.kind)) return damping->damping;
+    if (const auto* mooring = std::get_if<MooringDefinition>(&force.kind)) return mooring->stiffness;
+  }
   ADD_FAILURE() << "no force element " << name;
   return Matrix6::Zero();
 }
