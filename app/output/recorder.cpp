@@ -268,6 +268,7 @@ void Recorder::record(double t, const VectorX& y) {
     if (file_) file_->append(channel.series, row_.data());
     if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
   }
+  if (file_) file_->end_sample();
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
 

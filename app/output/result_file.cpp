@@ -108,11 +108,15 @@ void ResultFile::append(int series_id, const double* row) {
   Series& series = series_[series_id];
   const int width = std::max(series.columns, 1);
   series.buffer.insert(series.buffer.end(), row, row + width);
-  if (series.buffer.size() >= chunk_rows * width) flush();
+}
+
+void ResultFile::end_sample() {
+  if (++buffered_samples_ >= chunk_rows) flush();
 }
 
 void ResultFile::flush() {
   if (!file_.valid()) return;
+  buffered_samples_ = 0;
   for (Series& series : series_) {
     const int width = std::max(series.columns, 1);
     const hsize_t rows = series.buffer.size() / width;

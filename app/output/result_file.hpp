@@ -31,8 +31,12 @@ class ResultFile {
   /// Returns its id for append(); `units` and `description` become attributes.
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
-  /// Appends one row (max(columns, 1) values) to the in-memory buffer.
+  /// Appends one row (max(columns, 1) values) to the series' in-memory buffer.
   void append(int series, const double* row);
+  /// Ends one sample (a row appended to every series). The buffers go to disk only here,
+  /// once a chunk of samples has accumulated: the file then holds whole samples, every
+  /// series the same length, wherever the process is stopped (even by SIGKILL).
+  void end_sample();
   /// Writes buffered rows of every series and flushes the file to disk.
   void flush();
 
@@ -49,6 +53,7 @@ class ResultFile {
   std::string path_;
   hdf5::Handle file_;
   std::vector<Series> series_;
+  hsize_t buffered_samples_ = 0;  // samples appended since the last flush
   static constexpr hsize_t chunk_rows = 1024;
 };
 

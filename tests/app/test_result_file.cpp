@@ -8,8 +8,11 @@
 #include <filesystem>
 #include <fstream>
 #include <spawn.h>
+#include <sys/wait.h>
 #include <thread>
+#include <unistd.h>
 
+#include "app/output/result_file.hpp"
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -76,6 +79,46 @@ TEST(ResultFile, SignalStopsTheRunAndLeavesAReadableIncompleteFile) {
   ASSERT_GT(time.size(), 1u);
   EXPECT_LT(time.back(), 1000.0);
   EXPECT_EQ(file.shape("/joints/pivot/reaction_force")[0], time.size());
+  std::filesystem::remove(output);
+}
+
+TEST(ResultFile, AKilledWriterLeavesWholeSamples) {
+  // A child process writes samples as the recorder does and is killed (SIGKILL: no
+  // handler, no clean-up) in the middle of a sample, just after the first series of the
+  // 2048th sample (two chunks' worth) was appended. Whatever reached the disk must be
+  // whole samples: every series as long as /time, /time in order.
+  const std::string output = temporary("killed_writer.h5");
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    try {
+      ResultFile file(output);
+      const int time = file.add_series("/time", 0, "s", "time");
+      const int position = file.add_series("/bodies/b/position", 3, "m", "position");
+      const int energy = file.add_series("/signals/energy", 0, "J", "energy");
+      file.flush();  // the metadata, as a run writes it before its first step
+      for (int k = 0; k < 2048; ++k) {
+        const double t = k, xyz[3] = {k + 0.1, k + 0.2, k + 0.3}, e = 2.0 * k;
+        file.append(time, &t);
+        if (k == 2047) kill(getpid(), SIGKILL);
+        file.append(position, xyz);
+        file.append(energy, &e);
+        file.end_sample();
+      }
+    } catch (...) {
+    }
+    _exit(2);  // not reached unless the writer threw
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL) << "the writer was not killed";
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  const std::vector<double> time = file.read("/time");
+  ASSERT_EQ(time.size(), 1024u);  // the first chunk of samples, nothing of the second
+  EXPECT_EQ(file.shape("/bodies/b/position")[0], time.size());
+  EXPECT_EQ(file.shape("/signals/energy")[0], time.size());
+  for (std::size_t k = 0; k < time.size(); ++k) ASSERT_EQ(time[k], static_cast<double>(k));
   std::filesystem::remove(output);
 }
 
