@@ -1,6 +1,7 @@
 #include "samples/floating_bodies.hpp"
 
 #include "kernel/model/model_builder.hpp"
+#include "samples/joint_definition.hpp"
 
 namespace heavesim::samples {
 
@@ -9,12 +10,7 @@ std::shared_ptr<const Model> free_floating_body(const std::string& body_name, co
   ModelBuilder builder;
   builder.set_gravity(gravity);
   builder.add_body({body_name, inertia, added_inertia});
-  JointDefinition joint;
-  joint.name = "float";
-  joint.kind = JointKind::free;
-  joint.parent = "ground";
-  joint.child = body_name;
-  builder.add_joint(joint);
+  builder.add_joint(joint_definition("float", JointKind::free, "ground", body_name));
   return std::make_shared<const Model>(builder.build());
 }
 
@@ -24,13 +20,7 @@ std::shared_ptr<const Model> heaving_mss_semisub(const Matrix6& added_inertia) {
   builder.add_body({"semisub",
                     Inertia(mss_semisub_mass, Vector3(0, 0, -0.5), Vector3(5.66e10, 6.01e10, 7.31e10).asDiagonal()),
                     added_inertia});
-  JointDefinition joint;
-  joint.name = "heave";
-  joint.kind = JointKind::prismatic;
-  joint.axis = Vector3::UnitZ();
-  joint.parent = "ground";
-  joint.child = "semisub";
-  builder.add_joint(joint);
+  builder.add_joint(joint_definition("heave", JointKind::prismatic, "ground", "semisub", Vector3::UnitZ()));
   return std::make_shared<const Model>(builder.build());
 }
 

@@ -1,18 +1,14 @@
 #include "samples/oscillators.hpp"
 
 #include "kernel/model/model_builder.hpp"
+#include "samples/joint_definition.hpp"
 
 namespace heavesim::samples {
 namespace {
 
 JointDefinition vertical_prismatic(std::string name, std::string parent, std::string child) {
-  JointDefinition joint;
-  joint.name = std::move(name);
-  joint.kind = JointKind::prismatic;
-  joint.axis = Vector3::UnitZ();
-  joint.parent = std::move(parent);
-  joint.child = std::move(child);
-  return joint;
+  return joint_definition(std::move(name), JointKind::prismatic, std::move(parent), std::move(child),
+                          Vector3::UnitZ());
 }
 
 BodyDefinition point_body(std::string name, double mass) {

@@ -1,6 +1,7 @@
 #include "samples/planar_chains.hpp"
 
 #include "kernel/model/model_builder.hpp"
+#include "samples/joint_definition.hpp"
 
 namespace heavesim::samples {
 
@@ -13,14 +14,9 @@ Model planar_chain(const std::vector<PlanarLink>& links, double gravity) {
     const Matrix3 inertia = Eigen::Vector3d(link.inertia, link.inertia, 0.0).asDiagonal();
     builder.add_body({"link" + std::to_string(i + 1), Inertia(link.mass, Vector3(0.0, 0.0, -link.com), inertia),
                       std::nullopt});
-    JointDefinition joint;
-    joint.name = "pin" + std::to_string(i + 1);
-    joint.kind = JointKind::revolute;
-    joint.axis = Vector3::UnitY();
-    joint.parent = i == 0 ? "ground" : "link" + std::to_string(i);
-    joint.child = "link" + std::to_string(i + 1);
-    joint.X_parent_joint = Transform::from_translation(Vector3(0.0, 0.0, i == 0 ? 0.0 : -links[i - 1].length));
-    builder.add_joint(joint);
+    builder.add_joint(joint_definition("pin" + std::to_string(i + 1), JointKind::revolute,
+                                       i == 0 ? "ground" : "link" + std::to_string(i), "link" + std::to_string(i + 1),
+                                       Vector3::UnitY(), Vector3(0.0, 0.0, i == 0 ? 0.0 : -links[i - 1].length)));
   }
   return builder.build();
 }
@@ -31,12 +27,7 @@ Model pendulum(double mass, double com_distance, double inertia_about_com) {
                     Inertia(mass, Vector3(0, 0, -com_distance),
                             Vector3(inertia_about_com, inertia_about_com, 0.0).asDiagonal()),
                     std::nullopt});
-  JointDefinition pin;
-  pin.name = "pin";
-  pin.axis = Vector3::UnitY();
-  pin.parent = "ground";
-  pin.child = "rod";
-  builder.add_joint(pin);
+  builder.add_joint(joint_definition("pin", JointKind::revolute, "ground", "rod", Vector3::UnitY()));
   return builder.build();
 }
 

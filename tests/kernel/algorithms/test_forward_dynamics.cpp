@@ -17,12 +17,10 @@ namespace {
 TEST(ForwardDynamics, ArticulatedBodyAndCompositeRigidBodyAgree) {
   std::mt19937_64 random(51);
   for (int trial = 0; trial < 10; ++trial) {
-    samples::RandomTreeOptions options;
-    options.bodies = 14;
-    options.added_inertia = trial % 2 == 0;
-    const Model model = samples::random_tree(random, options);
+    const samples::RandomTreeAndState drawn = samples::random_tree_and_state(random, 14, trial % 2 == 0);
+    const Model& model = drawn.model;
+    const samples::RandomState& state = drawn.state;
     Data data(model);
-    const samples::RandomState state = samples::random_state(model, random);
     update_positions(model, data, state.q);
     update_velocities(model, data, state.q, state.v);
     const VectorX by_aba = forward_dynamics(model, data, state.tau, state.external_forces,

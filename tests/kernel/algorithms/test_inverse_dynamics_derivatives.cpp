@@ -14,12 +14,10 @@ namespace {
 TEST(InverseDynamicsDerivatives, MatchFiniteDifferencesOfRnea) {
   std::mt19937_64 random(11);
   for (int trial = 0; trial < 10; ++trial) {
-    samples::RandomTreeOptions options;
-    options.bodies = 10;
-    options.added_inertia = trial % 2 == 1;
-    const Model model = samples::random_tree(random, options);
+    const samples::RandomTreeAndState drawn = samples::random_tree_and_state(random, 10, trial % 2 == 1);
+    const Model& model = drawn.model;
+    const samples::RandomState& state = drawn.state;
     Data data(model);
-    const samples::RandomState state = samples::random_state(model, random);
     const VectorX qdd = state.tau;  // any acceleration will do
 
     inverse_dynamics_derivatives(model, data, state.q, state.v, qdd, state.external_forces);

@@ -37,12 +37,10 @@ TEST(MassMatrix, DoublePendulumMatchesTheClosedForm) {
 TEST(MassMatrix, ColumnsAreInverseDynamicsOfUnitAccelerations) {
   std::mt19937_64 random(31);
   for (int trial = 0; trial < 5; ++trial) {
-    samples::RandomTreeOptions options;
-    options.bodies = 14;
-    options.added_inertia = trial % 2 == 0;
-    const Model model = samples::random_tree(random, options);
+    const samples::RandomTreeAndState drawn = samples::random_tree_and_state(random, 14, trial % 2 == 0);
+    const Model& model = drawn.model;
+    const samples::RandomState& state = drawn.state;
     Data data(model);
-    const samples::RandomState state = samples::random_state(model, random);
     const MatrixX M = crba(model, data, state.q);
     const VectorX bias = rnea(model, data, state.q, state.v, VectorX::Zero(model.nv));
     for (int j = 0; j < model.nv; ++j) {
