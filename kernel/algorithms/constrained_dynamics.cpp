@@ -12,6 +12,12 @@ const VectorX& constrained_forward_dynamics(const Model& model, Data& data, doub
 
   constraint_jacobian(model, data, data.constraint_jacobian);
   constraint_bias(model, data, t, data.constraint_bias);
+  if (data.constraint_rows_set_aside) {
+    // Rows set aside as redundant take no part: zero rows of J and gamma give zero rows
+    // and columns of J M^-1 J^T, whose regularized solve returns lambda = 0 there.
+    data.constraint_jacobian.array().colwise() *= data.constraint_row_used.array();
+    data.constraint_bias.array() *= data.constraint_row_used.array();
+  }
 
   // Y = M^-1 J^T, A = J Y, b = gamma - J qdd_free.
   data.kkt_minv_jt = data.constraint_jacobian.transpose();

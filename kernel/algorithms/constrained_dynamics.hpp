@@ -18,8 +18,8 @@ namespace heavesim {
 inline constexpr double kkt_regularization = 1e-12;
 
 /// qdd (data.qdd) and lambda (data.constraint_multipliers) on the current stages at
-/// time t [s] (drivers); also leaves J and gamma in data. Without constraints this is
-/// CRBA forward dynamics.
+/// time t [s] (drivers); also leaves J and gamma in data (rows set aside in
+/// data.constraint_row_used zeroed). Without constraints this is CRBA forward dynamics.
 const VectorX& constrained_forward_dynamics(const Model& model, Data& data, double t, const VectorX& tau,
                                             ExternalForces external_forces_world = {});
 

@@ -32,7 +32,11 @@ struct ConstraintRank {
   int rank = 0;
   std::vector<int> redundant_rows;  // row indices; the reactions along them are not unique
 };
-ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double relative_threshold = 1e-10);
+/// Relative threshold on the pivots of J^T's column-pivoted QR below which a row counts
+/// as depending on the others.
+inline constexpr double constraint_rank_threshold = 1e-10;
+ConstraintRank analyse_constraint_rank(const Model& model, Data& data,
+                                       double relative_threshold = constraint_rank_threshold);
 
 /// The constraint that owns row r, or null.
 const Constraint* constraint_of_row(const Model& model, int row);

@@ -2,6 +2,7 @@
 
 #include <arkode/arkode_erkstep.h>
 
+#include <cstdio>
 #include <string>
 
 namespace heavesim {
@@ -54,17 +55,41 @@ void ErkIntegrator::initialize(double t0, const VectorX& y0) {
 void ErkIntegrator::advance_to(double t_out) {
   if (t_out <= t_) return;
   double t_reached = t_;
+  ERKStepSetStopTime(arkode_, t_out);
   const int flag = ERKStepEvolve(arkode_, t_out, y_nv_, &t_reached, ARK_NORMAL);
   if (flag < 0) {
     callback_error_.rethrow_if_set();
-    throw NumericalError(t_reached, std::string("ARKODE ERK failed (") + sundials::take_flag_name(ERKStepGetReturnFlagName(flag)) + ")",
-                         flag == ARK_TOO_MUCH_WORK
-                             ? "too many steps: the problem may be stiff; use solver.integrator: ida"
-                             : "step-size collapse; check force elements and tolerances");
+    double h = 0.0;
+    ERKStepGetCurrentStep(arkode_, &h);
+    char reached[96];
+    std::snprintf(reached, sizeof reached, ") at t = %.9g s with step %.3g s", t_reached, h);
+    std::string what = std::string("ARKODE ERK failed (") + sundials::take_flag_name(ERKStepGetReturnFlagName(flag)) + reached;
+    // Where: the component with the largest weighted local error of the last attempt,
+    // and what the last accepted state (returned in y_nv_) looked like.
+    N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
+    if (ERKStepGetEstLocalErrors(arkode_, errors) == ARK_SUCCESS && ERKStepGetErrWeights(arkode_, weights) == ARK_SUCCESS) {
+      const VectorX weighted = sundials::map(errors).cwiseProduct(sundials::map(weights)).cwiseAbs();
+      int worst = 0;
+      if (weighted.maxCoeff(&worst) > 0.0) what += "; largest local error in the " + system_.describe_component(worst);
+    }
+    N_VDestroy(errors);
+    N_VDestroy(weights);
+    std::string state_note;
+    try {
+      state_note = system_.diagnose_state(t_reached, sundials::map(y_nv_));
+    } catch (const std::exception&) {
+    }
+    if (!state_note.empty()) what += "; " + state_note;
+    throw NumericalError(t_reached, what,
+                         !state_note.empty() ? "solver.integrator: hht carries a mechanism through singular configurations"
+                         : flag == ARK_TOO_MUCH_WORK
+                             ? "too many steps: the problem may be stiff (use solver.integrator: ida) or "
+                               "solver.max_steps too low for the output interval"
+                             : "step-size collapse at that component: look for a discontinuous or unstable force "
+                               "element acting there, or loosen the tolerances");
   }
   t_ = t_out;
-  y_ = sundials::map(y_nv_);
-  system_.project(t_, y_);
+  y_ = sundials::map(y_nv_);  // the last step ended on t_out and was projected
 }
 
 IntegratorStatistics ErkIntegrator::statistics() const {

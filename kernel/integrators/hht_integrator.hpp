@@ -59,7 +59,7 @@ class HhtIntegrator : public Integrator {
   void accept_step(double h);
   /// x -= M^-1 J^T (J M^-1 J^T)^+ (J x - target), with the factors of the last accept.
   void project(VectorX& x, const VectorX& target);
-  [[noreturn]] void fail(double h) const;
+  [[noreturn]] void fail(double h);
 
   IntegratorSettings settings_;
   double alpha_, beta_, gamma_;

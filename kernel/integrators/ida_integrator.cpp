@@ -7,6 +7,7 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 namespace heavesim {
@@ -90,14 +91,18 @@ void IdaIntegrator::initialize(double t0, const VectorX& y0) {
   ida_ = IDACreate(context_);
   IDAInit(ida_, &IdaIntegrator::residual, t0, y_nv_, yp_nv_);
   IDASetUserData(ida_, this);
-  // Algebraic components (multipliers) take no part in the error test, but IDA's
-  // Newton convergence test weighs them too. The index-2 Newton matrix's condition
-  // grows like 1/h^2, so below about 1e-5 (N, or N m) a multiplier cannot be resolved
-  // at small steps and the corrector fails at t0 (measured on the L1 slider-crank:
-  // atol 1e-6 fails at rtol 1e-9, 1e-5 works down to rtol 1e-10); the states' accuracy is
-  // governed by the error test and is unaffected (docs/validation.md, L1).
+  // Algebraic components (multipliers) take no part in the error test (SuppressAlg)
+  // and none in Newton's convergence test either: their weight is ~0. An index-2
+  // multiplier is determined only to O(eps/h) by the Newton matrix (its condition grows
+  // like 1/h^2), so any absolute floor on it is a unit-dependent step-size floor: with
+  // 1e-5 (N) the L1 slider-crank failed at t = 0 for rtol = atol <= 1e-11 and Andrews'
+  // mechanism for rtol < 1e-4 in SI but not in mm-g-s. The multipliers still converge:
+  // F_v = ... - J^T lambda and F_q = ... + N J^T mu tie an update d(lambda) to a velocity
+  // update h M^-1 J^T d(lambda) (and d(mu) to a position update), which the test sees --
+  // the h-scaling of algebraic errors of index-2 DAEs (Hairer & Wanner, Solving ODEs II,
+  // VII.3; Brenan, Campbell & Petzold 1996, 5.4).
   atol_nv_ = N_VNew_Serial(n, context_);
-  const double algebraic_atol = std::max(settings_.absolute_tolerance, 1e-5);
+  constexpr double algebraic_atol = 1e100;  // weight 1e-100: out of every norm
   for (int i = 0; i < n; ++i) NV_Ith_S(atol_nv_, i) = mask[i] > 0.5 ? settings_.absolute_tolerance : algebraic_atol;
   IDASVtolerances(ida_, settings_.relative_tolerance, atol_nv_);
   IDASetId(ida_, id_nv_);
@@ -136,8 +141,34 @@ void IdaIntegrator::advance_to(double t_out) {
     callback_error_.rethrow_if_set();
     double h = 0.0;
     IDAGetLastStep(ida_, &h);
-    std::string what = std::string("IDA failed (") + sundials::take_flag_name(IDAGetReturnFlagName(flag)) + ") after reaching t = " +
-                       std::to_string(t_reached) + " s with last step " + std::to_string(h) + " s";
+    char reached[96];
+    std::snprintf(reached, sizeof reached, ") after reaching t = %.9g s with last step %.3g s", t_reached, h);
+    std::string what = std::string("IDA failed (") + sundials::take_flag_name(IDAGetReturnFlagName(flag)) + reached;
+    // Where: the differential component with the largest weighted local error of the
+    // last step attempted, and what the state looked like there.
+    N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
+    N_Vector current = nullptr;
+    if (IDAGetEstLocalErrors(ida_, errors) == IDA_SUCCESS && IDAGetErrWeights(ida_, weights) == IDA_SUCCESS) {
+      VectorX mask;
+      dae_.differential_mask(mask);
+      const VectorX weighted = (sundials::map(errors).cwiseProduct(sundials::map(weights))).cwiseAbs().cwiseProduct(mask);
+      int worst = 0;
+      if (weighted.maxCoeff(&worst) > 0.0) what += "; largest local error in the " + dae_.describe_component(worst);
+    }
+    N_VDestroy(errors);
+    N_VDestroy(weights);
+    std::string state_note;
+    if (IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current) {
+      try {
+        state_note = dae_.diagnose_state(t_reached, sundials::map(current));
+      } catch (const std::exception&) {
+      }
+    }
+    if (!state_note.empty()) {
+      throw NumericalError(t_reached, what + "; " + state_note,
+                           "the index-2 form cannot resolve the multipliers where the loops lose rank: "
+                           "solver.integrator: hht carries a mechanism through singular configurations");
+    }
     std::string suggestion;
     switch (flag) {
       case IDA_TOO_MUCH_WORK:

@@ -31,6 +31,7 @@ Data::Data(const Model& model)
   constraint_jacobian = MatrixX::Zero(m, model.nv);
   constraint_bias = VectorX::Zero(m);
   constraint_multipliers = VectorX::Zero(m);
+  constraint_row_used = VectorX::Ones(m);
   kkt_minv_jt = MatrixX::Zero(model.nv, m);
   kkt_schur = MatrixX::Zero(m, m);
   kkt_rhs = VectorX::Zero(m);

@@ -81,6 +81,11 @@ struct Data {
   MatrixX constraint_jacobian;      // J (m x nv)
   VectorX constraint_bias;          // gamma = -dJ/dt v (m)
   VectorX constraint_multipliers;   // lambda (m): M qdd + C = tau + J^T lambda
+  // Rows the KKT solve uses (1) or sets aside as redundant (0). The explicit methods
+  // choose them after every step on a mechanism with redundant rows (ode_form.cpp); by
+  // default every row is used and constraint_rows_set_aside is false.
+  VectorX constraint_row_used;      // m
+  bool constraint_rows_set_aside = false;
   MatrixX kkt_minv_jt;              // M^-1 J^T (nv x m)
   MatrixX kkt_schur;                // J M^-1 J^T (m x m)
   VectorX kkt_rhs;                  // m

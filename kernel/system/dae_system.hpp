@@ -10,7 +10,7 @@
 
 namespace heavesim {
 
-class DaeSystem {
+class DaeSystem : public FailureDiagnosis {
  public:
   virtual ~DaeSystem() = default;
   virtual int dae_size() const = 0;
@@ -40,6 +40,8 @@ class OdeResidual : public DaeSystem {
     system_.derivative(t, y, yp);
   }
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y; }
+  std::string describe_component(int index) const override { return system_.describe_component(index); }
+  std::string diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override {
     system_.derivative(t, y, f_);
     r = yp - f_;

@@ -52,6 +52,7 @@ void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, 
     for (int row : rank.redundant_rows) redundant[row] = true;
     for (int row = 0; row < model.num_constraint_rows; ++row)
       if (!redundant[row]) rows_.push_back(row);
+    system_.remember_constraint_rank(rank.rank);
   }
   const int kept = kept_rows();
   y.setZero(dae_size());
@@ -99,6 +100,15 @@ void GglDaeForm::residual(double t, const VectorX& y, const VectorX& yp, VectorX
     system_.element_state_derivatives(t, y, data, zdot_);
     r.segment(nq + nv, nz) = yp.segment(nq + nv, nz) - zdot_;
   }
+}
+
+std::string GglDaeForm::describe_component(int index) const {
+  const int size = system_.size(), m = kept_rows();
+  if (index < size) return system_.describe_state_component(index);
+  if (index < size + m) return "multiplier of " + describe_constraint_row(system_.model(), rows_[index - size]);
+  if (index < size + 2 * m)
+    return "position multiplier (GGL mu) of " + describe_constraint_row(system_.model(), rows_[index - size - m]);
+  return "component " + std::to_string(index);
 }
 
 void GglDaeForm::configuration_maps() {

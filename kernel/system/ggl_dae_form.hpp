@@ -19,6 +19,10 @@ class GglDaeForm final : public DaeSystem {
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y.head(system_.size()); }
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override;
   bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
+  std::string describe_component(int index) const override;
+  std::string diagnose_state(double t, const VectorX& y) override {
+    return system_.diagnose_state(t, y.head(system_.size()));
+  }
 
  private:
   /// Constraint rows in the DAE: the independent ones at the initial state.

@@ -4,6 +4,7 @@
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
+#include "kernel/algorithms/projection.hpp"
 
 namespace heavesim {
 
@@ -21,6 +22,8 @@ void Index3Form::initial_accelerations(double t, const VectorX& y, VectorX& a, V
   a = initial_rate_.segment(nq, nv);
   zdot = initial_rate_.tail(size - nq - nv);
   lambda = system_.data().constraint_multipliers;
+  if (model.has_constraints())  // the reference rank for diagnoses (once, at the start)
+    system_.remember_constraint_rank(analyse_constraint_rank(model, system_.mutable_data()).rank);
 }
 
 void Index3Form::dynamics_residual(double t, const VectorX& y, const VectorX& a, const VectorX& zdot, double penalty,

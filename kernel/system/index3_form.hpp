@@ -25,6 +25,10 @@ class Index3Form final : public SecondOrderSystem {
   void dynamics_derivatives(double t, const VectorX& y, const VectorX& a, DynamicsDerivatives& out) override;
   void constraint_terms(double t, const VectorX& y, ConstraintTerms& out) override;
   void constraint_bias_at(double t, const VectorX& y, VectorX& gamma) override;
+  std::string describe_component(int index) const override {
+    return system_.describe_state_component(system_.model().nq + index);  // v, then z: contiguous in y
+  }
+  std::string diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
 
  private:
   MultibodySystem& system_;

@@ -1,6 +1,9 @@
 #include "kernel/system/multibody_system.hpp"
 
 #include <cmath>
+#include <cstdio>
+
+#include <Eigen/SVD>
 
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
@@ -20,6 +23,7 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
       q_(VectorX::Zero(model_->nq)),
       v_(VectorX::Zero(model_->nv)),
       tau_total_(VectorX::Zero(model_->nv)),
+      constraint_force_(VectorX::Zero(model_->nv)),
       kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {
   bool joint_elements = false;
   for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
@@ -102,7 +106,25 @@ void MultibodySystem::check_constraint_solution(double t) {
                            std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
                            std::to_string(model_->num_constraint_rows) + ")",
                        "the mechanism has reached a locked or singular position: check the loop geometry, "
-                       "the initial state and the applied loads");
+                       "the initial state and the applied loads; if the mechanism passes through it (a four-bar "
+                       "lying flat), solver.integrator: hht carries it through at position level");
+}
+
+void MultibodySystem::spread_multipliers_over_every_row() {
+  // The constraint force f = J_used^T lambda is unique; the multipliers reported are the
+  // minimum-norm ones over every row, lambda = S^+ J M^-1 f with S = J M^-1 J^T: they
+  // satisfy S lambda = S lambda_used, and S^+ S is the projection onto range(J), so this
+  // is what a solve over every row gives (constrained_dynamics.hpp), whichever rows were
+  // set aside.
+  const Model& model = *model_;
+  constraint_force_.noalias() = data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
+  constraint_jacobian(model, data_, data_.constraint_jacobian);
+  data_.kkt_minv_jt = data_.constraint_jacobian.transpose();
+  data_.mass_matrix_cholesky.solveInPlace(data_.kkt_minv_jt);
+  data_.kkt_schur.noalias() = data_.constraint_jacobian * data_.kkt_minv_jt;
+  data_.kkt_rhs.noalias() = data_.kkt_minv_jt.transpose() * constraint_force_;
+  data_.kkt_solver.compute(data_.kkt_schur, kkt_regularization);
+  data_.kkt_solver.solve(data_.kkt_rhs, data_.constraint_multipliers);
 }
 
 void MultibodySystem::element_state_derivatives(double t, const VectorX& y, const Data& data,
@@ -126,12 +148,59 @@ void MultibodySystem::state_derivative(double t, const VectorX& y, VectorX& ydot
 void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reactions) {
   compute_accelerations(t, y);
   if (!compute_reactions) return;
+  if (data_.constraint_rows_set_aside) spread_multipliers_over_every_row();
   total_loads_ = forces_.external_force_world;
   if (model_->has_constraints()) {
     tau_total_ = forces_.joint_force;
     add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
   }
   compute_joint_wrenches(*model_, data_, total_loads_);
+}
+
+std::string MultibodySystem::describe_state_component(int index) const {
+  const Model& model = *model_;
+  const bool speed = index >= model.nq && index < model.nq + model.nv;
+  if (index < model.nq + model.nv) {
+    const int coordinate = speed ? index - model.nq : index;
+    for (int i = 1; i < model.num_links(); ++i) {
+      const Joint& joint = model.joints[i];
+      const int first = speed ? joint.v_index : joint.q_index, count = speed ? joint.nv : joint.nq;
+      if (count == 0 || coordinate < first || coordinate >= first + count) continue;
+      std::string what = speed ? "speed" : "coordinate";
+      if (count > 1) what += " " + std::to_string(coordinate - first);
+      return what + " of joint '" + joint.name + "' (body '" + model.links[i].name + "')";
+    }
+  }
+  for (std::size_t e = 0; e < elements_.size(); ++e) {
+    const int offset = state_offsets_[e], n = elements_[e]->state_size();
+    if (index >= offset && index < offset + n)
+      return "state " + std::to_string(index - offset) + " of force element '" + elements_[e]->name() + "'";
+  }
+  return "state component " + std::to_string(index);
+}
+
+std::string MultibodySystem::diagnose_state(double /*t*/, const VectorX& y) {
+  const Model& model = *model_;
+  for (int k = 0; k < y.size(); ++k)
+    if (!std::isfinite(y[k])) return "the " + describe_state_component(k) + " is not finite";
+  if (!model.has_constraints()) return "";
+  compute_kinematics(y);
+  constraint_jacobian(model, data_, data_.constraint_jacobian);
+  const Eigen::JacobiSVD<MatrixX> svd(data_.constraint_jacobian, Eigen::ComputeThinU);
+  const VectorX& sigma = svd.singularValues();
+  int rank = constraint_rank_;
+  if (rank < 0) rank = static_cast<int>((sigma.array() > constraint_rank_threshold * sigma[0]).count());
+  if (rank <= 0 || rank > sigma.size() || sigma[0] <= 0.0) return "";
+  const double ratio = sigma[rank - 1] / sigma[0];
+  // Away from a singular configuration the ratio is of order one (Bricard's mechanism:
+  // ~0.3; the A02 four-bars: 1e-2 at 0.01 rad from lying flat).
+  if (ratio > 1e-4) return "";
+  int row = 0;
+  svd.matrixU().col(rank - 1).cwiseAbs().maxCoeff(&row);
+  char text[160];
+  std::snprintf(text, sizeof text, "%.2g", ratio);
+  return "the loops are at a singular configuration: the constraint Jacobian's rank-" + std::to_string(rank) +
+         " singular value is " + text + " of its largest, lost along " + describe_constraint_row(model, row);
 }
 
 void MultibodySystem::report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const {

@@ -70,6 +70,17 @@ class MultibodySystem {
   bool has_applied_state_dependence() const {
     return applied_dependencies_.configuration || applied_dependencies_.velocity || applied_dependencies_.element_states;
   }
+  // --- diagnosis of a failed step (error path: may allocate) ---
+  /// Names component `index` of y = [q; v; z]: "speed of joint 'pivot0' (body 'crank0')".
+  std::string describe_state_component(int index) const;
+  /// What stands out at (t, y): a non-finite component, or loops within reach of a
+  /// singular configuration (the constraint Jacobian's rank-th singular value below
+  /// 1e-4 of its largest, naming the row it is lost along); "" otherwise. Recomputes
+  /// the position stage at y.
+  std::string diagnose_state(double t, const VectorX& y);
+  /// The rank of the constraint Jacobian on the manifold, as a form found it when it
+  /// started (the reference for diagnose_state); -1 until then.
+  void remember_constraint_rank(int rank) { constraint_rank_ = rank; }
   /// Names the first joint whose entry of per_coordinate (nv) is not finite.
   [[noreturn]] void report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const;
 
@@ -89,6 +100,9 @@ class MultibodySystem {
 
  private:
   void check_constraint_solution(double t);
+  /// With rows set aside (Data::constraint_row_used), the minimum-norm multipliers over
+  /// every row for the same constraint force, for reporting.
+  void spread_multipliers_over_every_row();
 
   std::shared_ptr<const Model> model_;
   SystemSettings settings_;
@@ -99,7 +113,8 @@ class MultibodySystem {
   std::vector<int> state_offsets_;
   ElementDependencies applied_dependencies_;
   int size_;
-  VectorX q_, v_, tau_total_, kkt_mismatch_;
+  int constraint_rank_ = -1;
+  VectorX q_, v_, tau_total_, constraint_force_, kkt_mismatch_;
 };
 
 }  // namespace heavesim

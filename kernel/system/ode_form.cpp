@@ -31,8 +31,28 @@ void OdeForm::project(double t, VectorX& y) {
                            "tolerances, or check for a singular configuration");
     }
     y.segment(model.nq, model.nv) = v_;
+    choose_constraint_rows();
   }
   y.head(model.nq) = q_;
+}
+
+void OdeForm::choose_constraint_rows() {
+  const Model& model = system_.model();
+  Data& data = system_.mutable_data();
+  // The projection left J at the projected configuration, every row.
+  if (constraint_rank_ < 0) {
+    row_selection_ = Eigen::ColPivHouseholderQR<MatrixX>(model.nv, model.num_constraint_rows);
+    row_selection_.setThreshold(constraint_rank_threshold);
+    row_selection_.compute(data.constraint_jacobian.transpose());
+    constraint_rank_ = static_cast<int>(row_selection_.rank());
+    system_.remember_constraint_rank(constraint_rank_);
+    data.constraint_rows_set_aside = constraint_rank_ < model.num_constraint_rows;
+  }
+  if (!data.constraint_rows_set_aside) return;
+  row_selection_.compute(data.constraint_jacobian.transpose());
+  data.constraint_row_used.setZero();
+  const auto& pivots = row_selection_.colsPermutation().indices();
+  for (int k = 0; k < constraint_rank_; ++k) data.constraint_row_used[pivots[k]] = 1.0;
 }
 
 }  // namespace heavesim

@@ -2,11 +2,12 @@
 // What an integrator sees: dy/dt = f(t, y), optionally with a projection onto the
 // manifold on which y must stay (unit quaternions, closed loops).
 #include "kernel/math/numerical_error.hpp"
+#include "kernel/system/failure_diagnosis.hpp"
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
 
-class OdeSystem {
+class OdeSystem : public FailureDiagnosis {
  public:
   virtual ~OdeSystem() = default;
   virtual int size() const = 0;

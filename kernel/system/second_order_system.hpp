@@ -34,7 +34,9 @@ struct ConstraintTerms {
   VectorX bias;      // gamma(t, q, v): J a = gamma, m
 };
 
-class SecondOrderSystem {
+/// Components (describe_component): velocity coordinates 0 .. nv-1, then element
+/// states nv .. nv+nz-1; diagnose_state takes y = [q; v; z].
+class SecondOrderSystem : public FailureDiagnosis {
  public:
   virtual ~SecondOrderSystem() = default;
   virtual int configuration_size() const = 0;  // nq
