@@ -44,9 +44,11 @@ double TimeFunction::evaluate(mu::Parser& parser, double t) const {
 }
 
 bool TimeFunction::position_uses_time() const {
-  // GetUsedVar parses once more, collecting the variables the expression reads; the next
-  // Eval parses again (a one-time cost at build, not in the run).
+  // GetUsedVar parses once more, collecting the variables the expression reads, and
+  // drops the compiled bytecode; the Eval after it compiles it again, here rather than
+  // at the first evaluation of the run.
   const mu::varmap_type used = position_->GetUsedVar();
+  position_->Eval();
   return used.count("t") > 0;
 }
 
