@@ -24,6 +24,9 @@ class NodeReader {
   const CaseNode& node() const { return *node_; }
   const std::string& path() const { return path_; }
   const SourceLocation& location() const { return node_->location; }
+  /// The case's expression context: its named parameters (for expressions of t that are
+  /// evaluated during the run, such as a joint torque's).
+  const ExpressionContext& expressions() const { return *expressions_; }
 
   // --- maps ---
   /// Requires a map whose keys are all keys of `form` of the schema section `section`

@@ -12,8 +12,8 @@ namespace heavesim {
 
 TimeFunction::TimeFunction(std::string name, const std::string& position, const std::optional<std::string>& velocity,
                            const std::optional<std::string>& acceleration,
-                           const std::map<std::string, double>& parameters)
-    : name_(std::move(name)), parameters_(parameters) {
+                           const std::map<std::string, double>& parameters, std::string owner)
+    : name_(std::move(name)), owner_(std::move(owner)), parameters_(parameters) {
   auto make = [this](const std::string& text) {
     auto parser = std::make_unique<mu::Parser>();
     define_case_functions(*parser);
@@ -38,9 +38,18 @@ double TimeFunction::evaluate(mu::Parser& parser, double t) const {
   time_ = t;
   const double value = parser.Eval();
   if (!std::isfinite(value))
-    throw NumericalError(t, "driver '" + name_ + "': the expression '" + parser.GetExpr() + "' is not finite",
-                         "check the driver's expressions for a division by zero or a function outside its domain");
+    throw NumericalError(t, owner_ + " '" + name_ + "': the expression '" + parser.GetExpr() + "' is not finite",
+                         "check the " + owner_ + "'s expressions for a division by zero or a function outside its domain");
   return value;
+}
+
+bool TimeFunction::position_uses_time() const {
+  // GetUsedVar parses once more, collecting the variables the expression reads, and
+  // drops the compiled bytecode; the Eval after it compiles it again, here rather than
+  // at the first evaluation of the run.
+  const mu::varmap_type used = position_->GetUsedVar();
+  position_->Eval();
+  return used.count("t") > 0;
 }
 
 double TimeFunction::position(double t) const { return evaluate(*position_, t); }

@@ -24,9 +24,11 @@ namespace heavesim {
 class TimeFunction {
  public:
   /// Throws std::invalid_argument (with muParser's reason) for an expression that does
-  /// not parse; `parameters` are the case's named values, copied.
+  /// not parse; `parameters` are the case's named values, copied. `owner` names what the
+  /// function belongs to in diagnoses ("driver", "joint torque").
   TimeFunction(std::string name, const std::string& position, const std::optional<std::string>& velocity,
-               const std::optional<std::string>& acceleration, const std::map<std::string, double>& parameters);
+               const std::optional<std::string>& acceleration, const std::map<std::string, double>& parameters,
+               std::string owner = "driver");
   ~TimeFunction();
   TimeFunction(const TimeFunction&) = delete;
   TimeFunction& operator=(const TimeFunction&) = delete;
@@ -36,11 +38,14 @@ class TimeFunction {
   /// Position at t, with no derivatives [m or rad].
   double position(double t) const;
   bool has_exact_derivatives() const { return velocity_ != nullptr && acceleration_ != nullptr; }
+  /// Whether the position expression reads t (a constant needs no time dependence).
+  bool position_uses_time() const;
 
  private:
   double evaluate(mu::Parser& parser, double t) const;
 
   std::string name_;                          // the driver's, for diagnoses
+  std::string owner_;                         // "driver", ..., for diagnoses
   std::map<std::string, double> parameters_;  // node-based: addresses stay valid for muParser
   mutable double time_ = 0.0;                 // the variable t every parser reads
   std::unique_ptr<mu::Parser> position_, velocity_, acceleration_;

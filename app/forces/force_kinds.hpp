@@ -12,6 +12,7 @@
 #include "app/forces/added_mass.hpp"
 #include "app/forces/ground_contact.hpp"
 #include "app/forces/hydrostatics.hpp"
+#include "app/forces/joint_torque.hpp"
 #include "app/forces/linear_damping.hpp"
 #include "app/forces/mooring.hpp"
 #include "app/forces/pneumatic_compensator.hpp"
@@ -26,6 +27,7 @@ namespace heavesim {
 using ForceKindDefinition = std::variant<
     SpringDamperDefinition,
     PointForceDefinition,
+    JointTorqueDefinition,
     GroundContactDefinition,
     PneumaticCompensatorDefinition,
     ActiveCompensatorDefinition,

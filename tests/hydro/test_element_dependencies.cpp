@@ -15,6 +15,7 @@
 #include "hydro/elements/linear_body_loads.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/elements/ground_contact.hpp"
+#include "kernel/elements/joint_torque.hpp"
 #include "kernel/elements/point_force.hpp"
 #include "kernel/elements/spring_damper.hpp"
 #include "samples/floating_bodies.hpp"
@@ -93,6 +94,28 @@ TEST_F(ElementDependencyTest, KernelElementsReadOnlyWhatTheyDeclare) {
   check(PointForce("hook", BodyPoint{1, Vector3(0.2, -0.1, 0.4)}, Vector3(10.0, -20.0, -300.0)));
   // The surface above the point, so that the contact carries load in both states.
   check(GroundContact("bit", BodyPoint{1, Vector3(0.0, 0.0, -0.1)}, GroundContactParameters{1e4, 50.0, 2.0}));
+}
+
+TEST_F(ElementDependencyTest, JointTorqueReadsOnlyWhatItDeclares) {
+  // It loads a coordinate, not a link, so check()'s link-load test does not apply; the
+  // same comparisons are made here by hand. A constant torque declares nothing at all.
+  const JointTorque constant("motor", 2, [](double) { return 3.5; }, false);
+  const VectorX no_states;
+  const Evaluation base = evaluate(constant, 1.0, q_, v_, no_states);
+  EXPECT_EQ(base.joint_force[2], 3.5);
+  EXPECT_EQ(base.joint_force.cwiseAbs().sum(), 3.5);
+  expect_same(base, evaluate(constant, 7.5, q_, v_, no_states), "constant torque: time");
+  VectorX q = q_, v = v_;
+  q << -0.4, 0.5, 0.35, std::cos(0.6), 0.0, std::sin(0.6), 0.0;
+  v << -0.7, 0.9, 0.4, -1.1, 0.8, -0.6;
+  expect_same(base, evaluate(constant, 1.0, q, v_, no_states), "constant torque: pose");
+  expect_same(base, evaluate(constant, 1.0, q_, v, no_states), "constant torque: speeds");
+  // A torque of t declares the time, and does move with it.
+  const JointTorque ramp("ramp", 2, [](double t) { return 2.0 * t; }, true);
+  EXPECT_TRUE(ramp.dependencies().time);
+  EXPECT_FALSE(ramp.dependencies().configuration || ramp.dependencies().velocity);
+  EXPECT_NE(evaluate(ramp, 1.0, q_, v_, no_states).joint_force[2], evaluate(ramp, 7.5, q_, v_, no_states).joint_force[2]);
+  expect_same(evaluate(ramp, 1.0, q_, v_, no_states), evaluate(ramp, 1.0, q, v, no_states), "ramp torque: pose, speeds");
 }
 
 TEST_F(ElementDependencyTest, LinearHydroLoadsReadOnlyWhatTheyDeclare) {

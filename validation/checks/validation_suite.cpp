@@ -20,6 +20,8 @@ const std::vector<ValidationCheck>& validation_checks() {
        check_l1_slider_crank},
       {"L2", "IFToMM A02 N-four-bar (N = 1, 2) through every singular pass vs the exact parallelogram motion",
        check_l2_four_bar},
+      {"A03", "IFToMM A03 Andrews' squeezing mechanism (SI and mm-g-s) vs the Test Set for IVP Solvers reference, in mescd",
+       check_a03_andrews},
       {"C1", "passive compensator under prescribed platform heave vs the linear transmissibility k / (k - M w^2)",
        check_c1_passive_compensator},
       {"C2", "static equilibrium of the H0 (rigid and elastic string) and H0b rigs (platform held): joint reactions vs "

@@ -44,6 +44,7 @@ std::vector<ValidationRow> check_k5_free_body();
 std::vector<ValidationRow> check_k6_algorithm_cross_checks();
 std::vector<ValidationRow> check_l1_slider_crank();
 std::vector<ValidationRow> check_l2_four_bar();
+std::vector<ValidationRow> check_a03_andrews();
 std::vector<ValidationRow> check_c1_passive_compensator();
 std::vector<ValidationRow> check_c2_static_rig();
 std::vector<ValidationRow> check_c3_gas_spring_energy();
