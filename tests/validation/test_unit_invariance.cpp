@@ -1,0 +1,134 @@
+// Unit invariance: the same mechanism written in SI and in millimetres and grams (every
+// length and mass times 1000) must run with the same success and the same accuracy at
+// every tolerance, with every integrator. Angles and time do not change with those
+// units, so nothing in the integrators may carry an absolute floor in metres, newtons
+// or kilograms: a floor makes the result depend on how the user wrote the case (issue:
+// IDA's multipliers had a 1e-5 floor in Newton's test, and Andrews' mechanism failed at
+// t = 0 in SI but ran in mm-g-s). The one setting in length units, the constraint
+// tolerance, is scaled with the case as a user would. A loop mechanism (Andrews', 7
+// angles, 6 loop equations in metres) and a tree (a 3-rod chain with a spring) are run;
+// both runs must succeed and reach the same accuracy against the true motion (Andrews:
+// the test set's reference; the chain: an SI run of Fehlberg 8(7) at 1e-13) within a
+// factor 10. Not identical digits: the two runs differ by round-off, and an adaptive
+// method's accept/reject decisions turn a round-off difference into a different step
+// sequence, whose results differ by about the tolerance (measured: SI against mm-g-s
+// differences of 1e-2..2 times the error for the adaptive methods, ~1e-13 for the
+// fixed-step ones). The factor is what one run already spreads over: IDA on Andrews
+// at rtol = atol = 1e-10 has error 7.5e-8, at 1.0000001e-10 2.1e-8, at 0.9999999e-10
+// 4.8e-8 (BDF's order and step choices); SI against mm-g-s measured up to 7.2.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "validation/checks/validation_suite.hpp"
+#include "validation/oracles/andrews_reference.hpp"
+
+namespace heavesim::validation {
+namespace {
+
+struct Method {
+  std::string integrator;
+  bool fixed_step;
+};
+
+const std::vector<Method> methods = {{"ida", false},    {"dopri5", false}, {"verner6", false},
+                                     {"fehlberg8", false}, {"rk4", true},  {"hht", true}};
+
+/// Final angles of the named joints, or an empty vector when the run fails.
+std::vector<double> final_angles(const std::string& path, const std::vector<std::string>& overrides,
+                                 const std::vector<std::string>& joints) {
+  std::vector<double> angles(joints.size());
+  try {
+    const RunOutcome outcome = run_case(path, overrides, [&](double, const MultibodySystem& system) {
+      const Model& model = system.model();
+      for (std::size_t i = 0; i < joints.size(); ++i)
+        angles[i] = system.configuration()[model.joints[model.joint_index(joints[i])].q_index];
+    });
+    if (!outcome.completed) return {};
+  } catch (const NumericalError&) {
+    return {};
+  }
+  return angles;
+}
+
+double largest_difference(const std::vector<double>& a, const std::vector<double>& b) {
+  double largest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, std::abs(a[i] - b[i]));
+  return largest;
+}
+
+/// The two runs' errors against the truth agree within a factor 10 (errors below 1e-11
+/// rad, round-off of long runs and the reference's own digits, count as 1e-11).
+void expect_same_accuracy(const std::string& label, const std::vector<double>& si, const std::vector<double>& mm,
+                          const std::vector<double>& truth) {
+  const double error_si = std::max(largest_difference(si, truth), 1e-11);
+  const double error_mm = std::max(largest_difference(mm, truth), 1e-11);
+  std::printf("%-16s error SI %.2e, mm-g-s %.2e, between %.2e\n", label.c_str(), error_si, error_mm,
+              largest_difference(si, mm));
+  EXPECT_LE(std::max(error_si, error_mm), 10.0 * std::min(error_si, error_mm)) << label;
+}
+
+/// Settings of one run: the method, its tolerance (or step), the constraint tolerance
+/// in the case's length unit.
+std::vector<std::string> settings(const Method& method, double tolerance, double step, double constraint_tolerance) {
+  std::vector<std::string> out = {"solver.integrator=" + method.integrator,
+                                  fmt::format("solver.constraint_tolerance={:g}", constraint_tolerance)};
+  if (method.fixed_step) {
+    out.push_back(fmt::format("solver.step={:g}", step));
+    out.push_back("solver.rtol=1e-10");
+    out.push_back("solver.atol=1e-10");
+  } else {
+    out.push_back(fmt::format("solver.rtol={:g}", tolerance));
+    out.push_back(fmt::format("solver.atol={:g}", tolerance));
+  }
+  return out;
+}
+
+TEST(UnitInvariance, AndrewsMechanismRunsAlikeInSiAndInMillimetresAndGrams) {
+  const std::vector<std::string> joints = {"beta", "Theta", "gamma", "Phi", "delta", "Omega", "epsilon"};
+  std::vector<double> reference(oracle::andrews_reference_positions.begin(), oracle::andrews_reference_positions.end());
+  for (const Method& method : methods) {
+    // Tolerances 1e-4 .. 1e-10 (steps 1e-5 .. 1e-6 s for the fixed-step methods).
+    for (int level = 0; level < 4; ++level) {
+      const double tolerance = std::pow(10.0, -4 - 2 * level), step = level < 2 ? 1e-5 : 2e-6;
+      if (method.fixed_step && level % 2 == 1) continue;
+      const std::string label = fmt::format("{} {:g}", method.integrator, method.fixed_step ? step : tolerance);
+      const auto si = final_angles("cases/validation/iftomm_a03_andrews.yaml", settings(method, tolerance, step, 1e-10), joints);
+      const auto mm = final_angles("cases/validation/iftomm_a03_andrews_mm_g.yaml", settings(method, tolerance, step, 1e-7), joints);
+      ASSERT_FALSE(si.empty()) << label << ": the SI run failed";
+      ASSERT_FALSE(mm.empty()) << label << ": the mm-g-s run failed";
+      expect_same_accuracy(label, si, mm, reference);
+    }
+  }
+}
+
+TEST(UnitInvariance, PendulumChainRunsAlikeInSiAndInMillimetresAndGrams) {
+  const std::vector<std::string> joints = {"pin1", "pin2", "pin3"};
+  const std::string path = "tests/cases/units_pendulum_chain.yaml";
+  const std::vector<std::string> millimetres = {"parameters.length_unit=1000", "parameters.mass_unit=1000"};
+  const auto truth = final_angles(path, {"solver.integrator=fehlberg8", "solver.rtol=1e-13", "solver.atol=1e-13"}, joints);
+  ASSERT_FALSE(truth.empty());
+  for (const Method& method : methods) {
+    for (int level = 0; level < 4; ++level) {
+      const double tolerance = std::pow(10.0, -4 - 2 * level), step = level < 2 ? 1e-3 : 1e-4;
+      if (method.fixed_step && level % 2 == 1) continue;
+      const std::string label = fmt::format("{} {:g}", method.integrator, method.fixed_step ? step : tolerance);
+      const auto si = final_angles(path, settings(method, tolerance, step, 1e-10), joints);
+      std::vector<std::string> mm_settings = settings(method, tolerance, step, 1e-7);
+      mm_settings.insert(mm_settings.end(), millimetres.begin(), millimetres.end());
+      const auto mm = final_angles(path, mm_settings, joints);
+      ASSERT_FALSE(si.empty()) << label << ": the SI run failed";
+      ASSERT_FALSE(mm.empty()) << label << ": the mm-g-s run failed";
+      expect_same_accuracy(label, si, mm, truth);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace heavesim::validation
