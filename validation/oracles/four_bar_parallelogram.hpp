@@ -17,3 +17,20 @@ std::vector<double> four_bar_crank_angles(int windows, double gravity, const std
                                           double tolerance);
 
 }  // namespace heavesim::oracle
+
+namespace heavesim::oracle {
+
+/// The same one-coordinate motion for any parallelogram linkage on its parallelogram
+/// branch (validation L5: cranks hanging, a third crank parallel to the others): q is
+/// every crank's angle from the downward vertical, the bars joining the crank tips only
+/// translate, and Lagrange gives
+///   q'' = -g sin q (first moment) / (second moment),
+/// first moment = sum over cranks of m c + sum over translating bars of m L [kg m],
+/// second moment = sum over cranks of I about the pivot + sum over translating bars of
+/// m L^2 [kg m^2] (L the crank length, c a crank's centre of mass from its pivot).
+/// The angle q [rad] at each time [s] (ascending, > 0) from q(0) = q0, q'(0) = rate0.
+std::vector<double> parallelogram_crank_angles(double first_moment, double second_moment, double gravity,
+                                               double q0, double rate0, const std::vector<double>& times,
+                                               double tolerance);
+
+}  // namespace heavesim::oracle
