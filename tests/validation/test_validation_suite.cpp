@@ -22,6 +22,8 @@ TEST_P(ValidationSuite, EveryRowPassesItsBar) {
 
 INSTANTIATE_TEST_SUITE_P(Kernel, ValidationSuite, ::testing::Values("K1", "K2", "K3", "K5", "K6"));
 INSTANTIATE_TEST_SUITE_P(Compensators, ValidationSuite, ::testing::Values("C1", "C2", "C3"));
+// A02 is left out: its N = 40 run stops today (docs/validation.md, A02).
+INSTANTIATE_TEST_SUITE_P(Benchmarks, ValidationSuite, ::testing::Values("A01", "A04", "A05", "L5"));
 INSTANTIATE_TEST_SUITE_P(Hydro, ValidationSuite, ::testing::Values("H1", "H2", "H3", "H4", "H5", "H6", "H7"));
 
 }  // namespace
