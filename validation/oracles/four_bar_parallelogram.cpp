@@ -21,10 +21,6 @@ std::vector<double> four_bar_crank_angles(int windows, double gravity, const std
   return angles;
 }
 
-}  // namespace heavesim::oracle
-
-namespace heavesim::oracle {
-
 std::vector<double> parallelogram_crank_angles(double first_moment, double second_moment, double gravity,
                                                double q0, double rate0, const std::vector<double>& times,
                                                double tolerance) {
