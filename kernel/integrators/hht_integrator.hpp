@@ -29,6 +29,7 @@
 // The step is fixed (IntegratorSettings::step); a step whose Newton iteration fails
 // is retried in halves, down to 1/1024 of it, before the run stops with a diagnosis.
 #include <string>
+#include <vector>
 
 #include "kernel/math/regularized_symmetric_solver.hpp"
 #include "kernel/integrators/integrator.hpp"
@@ -82,9 +83,11 @@ class HhtIntegrator : public Integrator {
   // Projections
   ConstraintTerms terms_;
   Eigen::LLT<MatrixX> mass_llt_;
-  MatrixX minv_jt_, schur_;                    // M^-1 J^T, J M^-1 J^T
+  std::vector<int> projection_rows_;           // rows independent at the start
+  MatrixX projection_jacobian_;                // J of those rows
+  MatrixX minv_jt_, schur_;                    // M^-1 J^T, J M^-1 J^T (those rows)
   RegularizedSymmetricSolver schur_solver_;
-  VectorX projection_residual_, projection_multipliers_, speeds_, gamma_target_;
+  VectorX projection_residual_, projection_multipliers_, projection_target_, speeds_, gamma_target_;
   // Diagnosis of the last failed step
   double worst_residual_ = 0.0;
   std::string last_failure_;                   // a non-finite residual's diagnosis
