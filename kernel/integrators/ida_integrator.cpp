@@ -7,6 +7,7 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -18,7 +19,7 @@ void IdaIntegrator::release() {
   if (ida_) IDAFree(&ida_);
   if (linear_solver_) SUNLinSolFree(linear_solver_);
   if (matrix_) SUNMatDestroy(matrix_);
-  for (N_Vector* v : {&y_nv_, &yp_nv_, &id_nv_, &atol_nv_})
+  for (N_Vector* v : {&y_nv_, &yp_nv_, &id_nv_})
     if (*v) {
       N_VDestroy(*v);
       *v = nullptr;
@@ -36,6 +37,38 @@ int IdaIntegrator::residual(double t, N_Vector y, N_Vector yp, N_Vector r, void*
     self->dae_.residual(t, self->work_y_, self->work_yp_, self->work_r_);
     sundials::map(r) = self->work_r_;
   });
+}
+
+int IdaIntegrator::error_weights(N_Vector y, N_Vector ewt, void* user_data) {
+  // Newton's test weighs the update of every component. A position multiplier's error
+  // d moves its constraint Phi over a step h by about h s d
+  // (DaeSystem::algebraic_constraint_scales), so its weight is h s /
+  // constraint_tolerance: the loops are then closed to the constraint tolerance
+  // whatever rtol and atol are, and the weight shrinks with h just as the multiplier's
+  // resolution does (the Newton matrix determines it only to O(eps / h), so the ratio of
+  // round-off to tolerance, eps |q| / constraint_tolerance, does not depend on h).
+  // Multipliers without a scale (lambda) weigh nothing. Any fixed weight is a
+  // unit-dependent floor instead: atol 1e-5 on the multipliers made the L1 slider-crank
+  // fail at t = 0 for rtol = atol <= 1e-11 and Andrews' mechanism for every rtol < 1e-4
+  // in SI but not in mm-g-s; no weight at all let the 3-hour H1 loop drift to
+  // |Phi| = 2e-5 m at rtol 1e-4 (with this weight: 3e-11 m, |J v| 7e-12 m/s).
+  // (Hairer & Wanner, Solving ODEs II, VII.3, on scaling index-2 algebraic components by
+  // h; IDA evaluates the weights once per step, with the step about to be tried.)
+  auto* self = static_cast<IdaIntegrator*>(user_data);
+  double h = 0.0;
+  if (self->ida_) IDAGetCurrentStep(self->ida_, &h);
+  const Eigen::Map<VectorX> values = sundials::map(y);
+  Eigen::Map<VectorX> weights = sundials::map(ewt);
+  const IntegratorSettings& settings = self->settings_;
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
+    if (self->mask_[i] > 0.5) {
+      weights[i] = 1.0 / (settings.relative_tolerance * std::abs(values[i]) + settings.absolute_tolerance);
+    } else {
+      const double weight = std::abs(h) * self->constraint_scale_[i] / settings.constraint_tolerance;
+      weights[i] = std::max(weight, 1e-100);  // IDA needs positive weights
+    }
+  }
+  return 0;
 }
 
 int IdaIntegrator::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix J, void* user_data,
@@ -91,20 +124,12 @@ void IdaIntegrator::initialize(double t0, const VectorX& y0) {
   ida_ = IDACreate(context_);
   IDAInit(ida_, &IdaIntegrator::residual, t0, y_nv_, yp_nv_);
   IDASetUserData(ida_, this);
-  // Algebraic components (multipliers) take no part in the error test (SuppressAlg)
-  // and none in Newton's convergence test either: their weight is ~0. An index-2
-  // multiplier is determined only to O(eps/h) by the Newton matrix (its condition grows
-  // like 1/h^2), so any absolute floor on it is a unit-dependent step-size floor: with
-  // 1e-5 (N) the L1 slider-crank failed at t = 0 for rtol = atol <= 1e-11 and Andrews'
-  // mechanism for rtol < 1e-4 in SI but not in mm-g-s. The multipliers still converge:
-  // F_v = ... - J^T lambda and F_q = ... + N J^T mu tie an update d(lambda) to a velocity
-  // update h M^-1 J^T d(lambda) (and d(mu) to a position update), which the test sees --
-  // the h-scaling of algebraic errors of index-2 DAEs (Hairer & Wanner, Solving ODEs II,
-  // VII.3; Brenan, Campbell & Petzold 1996, 5.4).
-  atol_nv_ = N_VNew_Serial(n, context_);
-  constexpr double algebraic_atol = 1e100;  // weight 1e-100: out of every norm
-  for (int i = 0; i < n; ++i) NV_Ith_S(atol_nv_, i) = mask[i] > 0.5 ? settings_.absolute_tolerance : algebraic_atol;
-  IDASVtolerances(ida_, settings_.relative_tolerance, atol_nv_);
+  // Error weights (error_weights below): the differential components' usual
+  // 1 / (rtol |y| + atol); the multipliers take no part in the error test
+  // (SuppressAlg) and enter Newton's test with a weight that scales with the step.
+  mask_ = mask;
+  dae_.algebraic_constraint_scales(constraint_scale_);
+  IDAWFtolerances(ida_, &IdaIntegrator::error_weights);
   IDASetId(ida_, id_nv_);
   if (mask.minCoeff() < 1.0) IDASetSuppressAlg(ida_, SUNTRUE);  // multipliers: no error test
   IDASetMaxNumSteps(ida_, settings_.max_steps_per_output);

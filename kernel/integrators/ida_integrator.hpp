@@ -26,6 +26,7 @@ class IdaIntegrator : public Integrator {
 
  private:
   static int residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data);
+  static int error_weights(N_Vector y, N_Vector ewt, void* user_data);
   static int jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user_data,
                       N_Vector, N_Vector, N_Vector);
   void release();
@@ -37,10 +38,11 @@ class IdaIntegrator : public Integrator {
   sundials::Context context_;
   sundials::CallbackError callback_error_;
   void* ida_ = nullptr;
-  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr, id_nv_ = nullptr, atol_nv_ = nullptr;
+  N_Vector y_nv_ = nullptr, yp_nv_ = nullptr, id_nv_ = nullptr;
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
   VectorX state_, work_y_, work_yp_, work_r_;
+  VectorX mask_, constraint_scale_;  // differential (1) or algebraic (0); algebraic_constraint_scales
   MatrixX work_jacobian_;
   std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
   double t_ = 0.0;

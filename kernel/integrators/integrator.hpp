@@ -35,7 +35,7 @@ struct IntegratorSettings {
   long max_steps_per_output = 100000;
   LinearSolver linear_solver = LinearSolver::dense;  // ida
   double hht_alpha = 0.0;         // hht: numerical damping, in [-1/3, 0] (0: trapezoidal rule)
-  double constraint_tolerance = 1e-10;  // hht: largest |Phi| accepted at the end of a step [m or rad]
+  double constraint_tolerance = 1e-10;  // hht, ida: largest |Phi| accepted at the end of a step [m or rad]
 };
 
 struct IntegratorStatistics {

@@ -21,6 +21,11 @@ class DaeSystem : public FailureDiagnosis {
   /// The ODE state contained in y.
   virtual void state_from_dae(const VectorX& y, VectorX& state) const = 0;
   virtual void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) = 0;
+  /// For each algebraic component i, s_i such that an error d in it moves the residual
+  /// of its constraint by about h s_i d over a step h (0 for differential components
+  /// and algebraic ones without a constraint): the integrator weighs it by
+  /// h s_i / (constraint tolerance) in Newton's test. Default: none.
+  virtual void algebraic_constraint_scales(VectorX& scale) const { scale.setZero(dae_size()); }
   /// dF/dy + cj dF/dy'; returns false to let the integrator approximate it.
   virtual bool jacobian(double /*t*/, const VectorX& /*y*/, const VectorX& /*yp*/, double /*cj*/,
                         MatrixX& /*J*/) {

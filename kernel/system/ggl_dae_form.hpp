@@ -20,6 +20,7 @@ class GglDaeForm final : public DaeSystem {
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override;
   bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
   std::string describe_component(int index) const override;
+  void algebraic_constraint_scales(VectorX& scale) const override;
   std::string diagnose_state(double t, const VectorX& y) override {
     return system_.diagnose_state(t, y.head(system_.size()));
   }
@@ -39,6 +40,8 @@ class GglDaeForm final : public DaeSystem {
   MatrixX n_times_jt_mu_q_;                      // nq x nv, workspace of jacobian()
   MatrixX rows_jacobian_;  // J of the kept rows at the last residual
   VectorX constraint_;     // Phi of the kept rows
+  VectorX position_row_scale_;  // (J J^T)_ii of the kept rows at the start
+  VectorX equation_scale_;      // a constant per equation (dae_initial_values)
   DynamicsDerivatives derivatives_;
   GglDerivatives ggl_derivatives_;
 };
