@@ -20,6 +20,7 @@ const std::vector<ValidationCheck>& validation_checks() {
        check_l1_slider_crank},
       {"L2", "IFToMM A02 N-four-bar (N = 1, 2) through every singular pass vs the exact parallelogram motion",
        check_l2_four_bar},
+      {"L4", "constraint drift of the 3-hour H1 rig with a loop (IDA at the case's 1e-4)", check_l4_constraint_drift},
       {"A03", "IFToMM A03 Andrews' squeezing mechanism (SI and mm-g-s) vs the Test Set for IVP Solvers reference, in mescd",
        check_a03_andrews},
       {"L5", "over-constrained parallelogram (3-D loop joints, a third parallel crank): 7 redundant rows, exact motion",

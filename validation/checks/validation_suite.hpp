@@ -44,6 +44,7 @@ std::vector<ValidationRow> check_k5_free_body();
 std::vector<ValidationRow> check_k6_algorithm_cross_checks();
 std::vector<ValidationRow> check_l1_slider_crank();
 std::vector<ValidationRow> check_l2_four_bar();
+std::vector<ValidationRow> check_l4_constraint_drift();
 std::vector<ValidationRow> check_a03_andrews();
 std::vector<ValidationRow> check_l5_overconstrained_four_bar();
 std::vector<ValidationRow> check_a01_simple_pendulum();
