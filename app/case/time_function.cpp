@@ -63,7 +63,7 @@ DriverMotion TimeFunction::operator()(double t) const {
     return motion;
   }
   // Fourth-order central differences (Fornberg 1988) on t +- h, t +- 2h.
-  constexpr double h = 1e-3;
+  constexpr double h = difference_step;
   const double back2 = position(t - 2 * h), back1 = position(t - h);
   const double ahead1 = position(t + h), ahead2 = position(t + 2 * h);
   motion.velocity = velocity_ ? evaluate(*velocity_, t) : (back2 - 8 * back1 + 8 * ahead1 - ahead2) / (12 * h);

@@ -33,6 +33,9 @@ class TimeFunction {
   TimeFunction(const TimeFunction&) = delete;
   TimeFunction& operator=(const TimeFunction&) = delete;
 
+  /// Step of the central differences that stand in for missing derivatives [s].
+  static constexpr double difference_step = 1e-3;
+
   DriverMotion operator()(double t) const;
 
   /// Position at t, with no derivatives [m or rad].

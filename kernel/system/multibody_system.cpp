@@ -106,8 +106,10 @@ void MultibodySystem::check_constraint_solution(double t) {
                            std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
                            std::to_string(model_->num_constraint_rows) + ")",
                        "the mechanism has reached a locked or singular position: check the loop geometry, "
-                       "the initial state and the applied loads; if the mechanism passes through it (a four-bar "
-                       "lying flat), solver.integrator: hht carries it through at position level");
+                       "the initial state and the applied loads. A mechanism that passes through such a position "
+                       "(a four-bar lying flat) is carried through by the index-3 integrator (solver.integrator: "
+                       "hht); one that cannot move on (a loop stretched to its reach, a dead centre) stops here "
+                       "with any integrator");
 }
 
 void MultibodySystem::spread_multipliers_over_every_row() {

@@ -1,5 +1,7 @@
 #include "kernel/system/ode_form.hpp"
 
+#include <cstdio>
+
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/projection.hpp"
@@ -22,9 +24,10 @@ void OdeForm::project(double t, VectorX& y) {
     if (!result.converged) {
       int worst = 0;
       data.constraint_residual.cwiseAbs().maxCoeff(&worst);
+      char residual[32];
+      std::snprintf(residual, sizeof residual, "%.3g", result.position_residual);
       throw NumericalError(t,
-                           "constraint projection did not converge: |Phi| = " +
-                               std::to_string(result.position_residual) + " after " +
+                           std::string("constraint projection did not converge: |Phi| = ") + residual + " after " +
                                std::to_string(result.iterations) + " iterations, worst at " +
                                describe_constraint_row(model, worst),
                            "the step was too large for the loop to be restored: reduce solver.step or the "
