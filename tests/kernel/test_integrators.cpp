@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 
 #include "kernel/integrators/integrator.hpp"
 
@@ -56,6 +57,33 @@ TEST(Integrators, Rk4LandsExactlyOnOutputTimesOffTheStepGrid) {
   integrator->advance_to(0.01);
   EXPECT_DOUBLE_EQ(integrator->time(), 0.01);
   EXPECT_NEAR(integrator->state()[0], std::cos(0.01), 1e-12);
+}
+
+TEST(Integrators, ExplicitMethodsOutputsImproveWithTheToleranceDownTo1e12) {
+  // Outputs every 0.05 s, shorter than the methods' steps at loose tolerances: the
+  // state there must come from a step that ends on it, not from ARKODE's Hermite
+  // interpolant (degree <= 5, below Verner 6(5) and Fehlberg 8(7); interpolating, both
+  // levelled off at 8-9 digits on Andrews' mechanism).
+  for (IntegrationMethod method : {IntegrationMethod::dopri5, IntegrationMethod::verner6, IntegrationMethod::fehlberg8}) {
+    double previous = std::numeric_limits<double>::infinity();
+    for (double tolerance : {1e-6, 1e-8, 1e-10, 1e-12}) {
+      HarmonicOscillator system;
+      IntegratorSettings settings;
+      settings.method = method;
+      settings.relative_tolerance = settings.absolute_tolerance = tolerance;
+      auto integrator = make_integrator(settings, system);
+      integrator->initialize(0.0, Eigen::Vector2d(1.0, 0.0));
+      double max_error = 0.0;
+      for (int k = 1; k <= 200; ++k) {
+        integrator->advance_to(0.05 * k);
+        max_error = std::max(max_error, std::abs(integrator->state()[0] - std::cos(0.05 * k)));
+      }
+      // Smaller at every tighter tolerance until round-off (measured 6.7e-15 here).
+      if (max_error > 1e-13) EXPECT_LT(max_error, previous) << integration_method_name(method) << " at " << tolerance;
+      EXPECT_LT(max_error, 1e3 * tolerance) << integration_method_name(method) << " at " << tolerance;
+      previous = max_error;
+    }
+  }
 }
 
 TEST(Integrators, AdaptiveMethodsMeetTheirTolerance) {
