@@ -9,7 +9,12 @@
 namespace heavesim {
 
 OdeForm::OdeForm(MultibodySystem& system)
-    : system_(system), q_(VectorX::Zero(system.model().nq)), v_(VectorX::Zero(system.model().nv)) {}
+    : system_(system),
+      q_(VectorX::Zero(system.model().nq)),
+      v_(VectorX::Zero(system.model().nv)),
+      row_selection_(system.model().nv, system.model().num_constraint_rows) {  // sized once: compute() reuses it
+  row_selection_.setThreshold(constraint_rank_threshold);
+}
 
 void OdeForm::project(double t, VectorX& y) {
   const Model& model = system_.model();
@@ -44,8 +49,6 @@ void OdeForm::choose_constraint_rows() {
   Data& data = system_.mutable_data();
   // The projection left J at the projected configuration, every row.
   if (constraint_rank_ < 0) {
-    row_selection_ = Eigen::ColPivHouseholderQR<MatrixX>(model.nv, model.num_constraint_rows);
-    row_selection_.setThreshold(constraint_rank_threshold);
     row_selection_.compute(data.constraint_jacobian.transpose());
     constraint_rank_ = static_cast<int>(row_selection_.rank());
     system_.remember_constraint_rank(constraint_rank_);
