@@ -1,5 +1,7 @@
 #include "kernel/algorithms/projection.hpp"
 
+#include <algorithm>
+
 #include <Eigen/QR>
 
 #include "kernel/algorithms/configuration.hpp"
@@ -70,6 +72,13 @@ ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double re
   for (int k = result.rank; k < result.rows; ++k) result.redundant_rows.push_back(qr.colsPermutation().indices()[k]);
   std::sort(result.redundant_rows.begin(), result.redundant_rows.end());
   return result;
+}
+
+std::vector<int> ConstraintRank::independent_rows() const {
+  std::vector<int> kept;
+  for (int row = 0; row < rows; ++row)
+    if (!std::binary_search(redundant_rows.begin(), redundant_rows.end(), row)) kept.push_back(row);
+  return kept;
 }
 
 const Constraint* constraint_of_row(const Model& model, int row) {

@@ -31,6 +31,8 @@ struct ConstraintRank {
   int rows = 0;
   int rank = 0;
   std::vector<int> redundant_rows;  // row indices; the reactions along them are not unique
+  /// The other rows, ascending: the ones a form keeps.
+  std::vector<int> independent_rows() const;
 };
 /// Relative threshold on the pivots of J^T's column-pivoted QR below which a row counts
 /// as depending on the others.

@@ -67,18 +67,11 @@ void ErkIntegrator::advance_to(double t_out) {
     // Where: the component with the largest weighted local error of the last attempt,
     // and what the last accepted state (returned in y_nv_) looked like.
     N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
-    if (ERKStepGetEstLocalErrors(arkode_, errors) == ARK_SUCCESS && ERKStepGetErrWeights(arkode_, weights) == ARK_SUCCESS) {
-      const VectorX weighted = sundials::map(errors).cwiseProduct(sundials::map(weights)).cwiseAbs();
-      int worst = 0;
-      if (weighted.maxCoeff(&worst) > 0.0) what += "; largest local error in the " + system_.describe_component(worst);
-    }
+    if (ERKStepGetEstLocalErrors(arkode_, errors) == ARK_SUCCESS && ERKStepGetErrWeights(arkode_, weights) == ARK_SUCCESS)
+      what += sundials::largest_local_error(system_, errors, weights);
     N_VDestroy(errors);
     N_VDestroy(weights);
-    std::string state_note;
-    try {
-      state_note = system_.diagnose_state(t_reached, sundials::map(y_nv_));
-    } catch (const std::exception&) {
-    }
+    const std::string state_note = system_.state_note(t_reached, sundials::map(y_nv_));
     if (!state_note.empty()) what += "; " + state_note;
     throw NumericalError(t_reached, what,
                          !state_note.empty() ? "solver.integrator: hht carries a mechanism through singular configurations"

@@ -1,10 +1,6 @@
 #include "kernel/integrators/hht_integrator.hpp"
 
 #include <algorithm>
-
-#include <Eigen/QR>
-
-#include "kernel/algorithms/projection.hpp"
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -73,13 +69,7 @@ void HhtIntegrator::initialize(double t0, const VectorX& y0) {
   // rows of a planar loop closed by 3-D revolute joints, 120 of the 200 rows of IFToMM
   // A02 with N = 40 -- add nothing to them but a cubic cost in J M^-1 J^T (measured: the
   // 200-row factorization made most of that run's time).
-  projection_rows_.clear();
-  if (m_ > 0) {
-    Eigen::ColPivHouseholderQR<MatrixX> qr(terms_.jacobian.transpose());
-    qr.setThreshold(constraint_rank_threshold);
-    for (int k = 0; k < qr.rank(); ++k) projection_rows_.push_back(qr.colsPermutation().indices()[k]);
-    std::sort(projection_rows_.begin(), projection_rows_.end());
-  }
+  projection_rows_ = system_.independent_constraint_rows();
   const int kept = static_cast<int>(projection_rows_.size());
   projection_jacobian_.resize(kept, nv_);
   schur_solver_ = RegularizedSymmetricSolver(kept);
@@ -302,11 +292,7 @@ void HhtIntegrator::fail(double h) {
                   "HHT step-size collapse: Newton's iteration did not converge even with a step of %.3g s "
                   "(largest residual %.3g, in the rate of the %s)",
                   h, worst_residual_, where.c_str());
-  std::string state_note;
-  try {
-    state_note = system_.diagnose_state(t_, y_);
-  } catch (const std::exception&) {
-  }
+  const std::string state_note = system_.state_note(t_, y_);
   if (!state_note.empty())
     throw NumericalError(t_, std::string(what) + "; " + state_note,
                          "the loops lose rank here: a smaller solver.step resolves the pass better; check that "

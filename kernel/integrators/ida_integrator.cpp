@@ -60,8 +60,9 @@ int IdaIntegrator::error_weights(N_Vector y, N_Vector ewt, void* user_data) {
   const Eigen::Map<VectorX> values = sundials::map(y);
   Eigen::Map<VectorX> weights = sundials::map(ewt);
   const IntegratorSettings& settings = self->settings_;
+  const Eigen::Map<VectorX> differential = sundials::map(self->id_nv_);  // 1 differential, 0 algebraic
   for (Eigen::Index i = 0; i < values.size(); ++i) {
-    if (self->mask_[i] > 0.5) {
+    if (differential[i] > 0.5) {
       weights[i] = 1.0 / (settings.relative_tolerance * std::abs(values[i]) + settings.absolute_tolerance);
     } else {
       const double weight = std::abs(h) * self->constraint_scale_[i] / settings.constraint_tolerance;
@@ -127,7 +128,6 @@ void IdaIntegrator::initialize(double t0, const VectorX& y0) {
   // Error weights (error_weights below): the differential components' usual
   // 1 / (rtol |y| + atol); the multipliers take no part in the error test
   // (SuppressAlg) and enter Newton's test with a weight that scales with the step.
-  mask_ = mask;
   dae_.algebraic_constraint_scales(constraint_scale_);
   IDAWFtolerances(ida_, &IdaIntegrator::error_weights);
   IDASetId(ida_, id_nv_);
@@ -172,23 +172,14 @@ void IdaIntegrator::advance_to(double t_out) {
     // Where: the differential component with the largest weighted local error of the
     // last step attempted, and what the state looked like there.
     N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
-    N_Vector current = nullptr;
-    if (IDAGetEstLocalErrors(ida_, errors) == IDA_SUCCESS && IDAGetErrWeights(ida_, weights) == IDA_SUCCESS) {
-      VectorX mask;
-      dae_.differential_mask(mask);
-      const VectorX weighted = (sundials::map(errors).cwiseProduct(sundials::map(weights))).cwiseAbs().cwiseProduct(mask);
-      int worst = 0;
-      if (weighted.maxCoeff(&worst) > 0.0) what += "; largest local error in the " + dae_.describe_component(worst);
-    }
+    if (IDAGetEstLocalErrors(ida_, errors) == IDA_SUCCESS && IDAGetErrWeights(ida_, weights) == IDA_SUCCESS)
+      what += sundials::largest_local_error(dae_, errors, weights, id_nv_);  // differential components
     N_VDestroy(errors);
     N_VDestroy(weights);
-    std::string state_note;
-    if (IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current) {
-      try {
-        state_note = dae_.diagnose_state(t_reached, sundials::map(current));
-      } catch (const std::exception&) {
-      }
-    }
+    N_Vector current = nullptr;
+    const std::string state_note = IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current
+                                       ? dae_.state_note(t_reached, sundials::map(current))
+                                       : std::string();
     if (!state_note.empty()) {
       throw NumericalError(t_reached, what + "; " + state_note,
                            "the index-2 form cannot resolve the multipliers where the loops lose rank: "

@@ -42,7 +42,7 @@ class IdaIntegrator : public Integrator {
   SUNMatrix matrix_ = nullptr;
   SUNLinearSolver linear_solver_ = nullptr;
   VectorX state_, work_y_, work_yp_, work_r_;
-  VectorX mask_, constraint_scale_;  // differential (1) or algebraic (0); algebraic_constraint_scales
+  VectorX constraint_scale_;  // DaeSystem::algebraic_constraint_scales
   MatrixX work_jacobian_;
   std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
   double t_ = 0.0;

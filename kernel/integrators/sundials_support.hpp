@@ -22,6 +22,18 @@ inline std::string take_flag_name(char* name) {
   return text;
 }
 
+/// "; largest local error in the <component>" for the component with the largest
+/// |error * weight| among those with a nonzero `counted` entry (all when null), from a
+/// solver's last step attempt; "" when every weighted error is zero. Error path only.
+inline std::string largest_local_error(const FailureDiagnosis& system, N_Vector errors, N_Vector weights,
+                                       N_Vector counted = nullptr) {
+  VectorX weighted = map(errors).cwiseProduct(map(weights)).cwiseAbs();
+  if (counted) weighted = weighted.cwiseProduct(map(counted));
+  int worst = 0;
+  if (weighted.size() == 0 || !(weighted.maxCoeff(&worst) > 0.0)) return "";
+  return "; largest local error in the " + system.describe_component(worst);
+}
+
 /// Owns a SUNContext for one integrator instance.
 class Context {
  public:

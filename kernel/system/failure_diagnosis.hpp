@@ -20,6 +20,16 @@ class FailureDiagnosis {
   /// What stands out in the integrator's vector y at time t [s] (a singular
   /// configuration, a non-finite value), or "" when nothing does.
   virtual std::string diagnose_state(double /*t*/, const VectorX& /*y*/) { return ""; }
+
+  /// diagnose_state for an error message already being built: a diagnosis that fails
+  /// itself says nothing rather than replace the error it explains.
+  std::string state_note(double t, const VectorX& y) noexcept {
+    try {
+      return diagnose_state(t, y);
+    } catch (...) {
+      return "";
+    }
+  }
 };
 
 }  // namespace heavesim

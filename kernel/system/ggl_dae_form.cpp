@@ -51,10 +51,7 @@ void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, 
   if (model.has_constraints()) {
     // The ODE evaluation left the position stage at q and lambda of all rows.
     const ConstraintRank rank = analyse_constraint_rank(model, data);
-    std::vector<bool> redundant(model.num_constraint_rows, false);
-    for (int row : rank.redundant_rows) redundant[row] = true;
-    for (int row = 0; row < model.num_constraint_rows; ++row)
-      if (!redundant[row]) rows_.push_back(row);
+    rows_ = rank.independent_rows();
     system_.remember_constraint_rank(rank.rank);
   }
   const int kept = kept_rows();

@@ -22,8 +22,11 @@ void Index3Form::initial_accelerations(double t, const VectorX& y, VectorX& a, V
   a = initial_rate_.segment(nq, nv);
   zdot = initial_rate_.tail(size - nq - nv);
   lambda = system_.data().constraint_multipliers;
-  if (model.has_constraints())  // the reference rank for diagnoses (once, at the start)
-    system_.remember_constraint_rank(analyse_constraint_rank(model, system_.mutable_data()).rank);
+  independent_rows_.clear();
+  if (!model.has_constraints()) return;
+  const ConstraintRank rank = analyse_constraint_rank(model, system_.mutable_data());
+  independent_rows_ = rank.independent_rows();
+  system_.remember_constraint_rank(rank.rank);  // the reference rank for diagnoses
 }
 
 void Index3Form::dynamics_residual(double t, const VectorX& y, const VectorX& a, const VectorX& zdot, double penalty,

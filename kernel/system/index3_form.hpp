@@ -19,6 +19,7 @@ class Index3Form final : public SecondOrderSystem {
   int element_state_size() const override { return system_.element_state_size(); }
   void integrate_configuration(const VectorX& q, const VectorX& step, VectorX& q_out) const override;
   void initial_accelerations(double t, const VectorX& y, VectorX& a, VectorX& zdot, VectorX& lambda) override;
+  const std::vector<int>& independent_constraint_rows() const override { return independent_rows_; }
   void dynamics_residual(double t, const VectorX& y, const VectorX& a, const VectorX& zdot, double penalty,
                          VectorX& lambda, Eigen::Ref<VectorX> r_v, Eigen::Ref<VectorX> r_z,
                          Eigen::Ref<VectorX> phi) override;
@@ -34,6 +35,7 @@ class Index3Form final : public SecondOrderSystem {
   MultibodySystem& system_;
   DynamicsDifferentiator differentiator_;
   VectorX initial_rate_, multiplier_force_;
+  std::vector<int> independent_rows_;  // set by initial_accelerations
 };
 
 }  // namespace heavesim

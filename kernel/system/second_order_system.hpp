@@ -9,6 +9,8 @@
 // the multipliers' sign as in constraint_equations.hpp. Derivatives with respect to
 // q are taken along the tangent directions of the configuration manifold (those of
 // integrate_configuration), so quaternion joints need no special care by the caller.
+#include <vector>
+
 #include "kernel/system/ode_system.hpp"
 
 namespace heavesim {
@@ -50,6 +52,10 @@ class SecondOrderSystem : public FailureDiagnosis {
   /// Accelerations a, element-state rates zdot and multipliers lambda consistent with
   /// the state y at t (the index-1 solution), to start an integration.
   virtual void initial_accelerations(double t, const VectorX& y, VectorX& a, VectorX& zdot, VectorX& lambda) = 0;
+  /// The constraint rows independent at the state of initial_accelerations (ascending):
+  /// the others are redundant there (the out-of-plane rows of a planar loop closed by
+  /// 3-D revolute joints).
+  virtual const std::vector<int>& independent_constraint_rows() const = 0;
 
   /// r_v, r_z and Phi at (t, y = [q; v; z]) for accelerations a and element-state
   /// rates zdot, in the augmented-Lagrangian form of Bayo & Ledesma (1996): the
