@@ -40,7 +40,6 @@ class TimeFunction {
 
   /// Position at t, with no derivatives [m or rad].
   double position(double t) const;
-  bool has_exact_derivatives() const { return velocity_ != nullptr && acceleration_ != nullptr; }
   /// Whether the position expression reads t (a constant needs no time dependence).
   bool position_uses_time() const;
 

@@ -32,14 +32,14 @@ JointTorqueDefinition JointTorqueDefinition::read(const NodeReader& item, const 
   def.coordinate = static_cast<int>(item.optional("coordinate") ? item["coordinate"].integer() : 0);
   const NodeReader torque = item["torque"];
   if (!torque.node().is_scalar()) torque.fail(expected_torque);
-  def.torque = torque.node().scalar;
-  def.parameters = item.expressions().parameters();
-  // Parsed now, so that a bad expression is bad input at its key, not a failure mid-run.
+  // Parsed here, once, so that a bad expression is bad input at its key, not a failure mid-run.
   try {
-    TimeFunction(item["name"].text(), def.torque, std::nullopt, std::nullopt, def.parameters, "joint torque");
+    def.torque = std::make_shared<const TimeFunction>(item["name"].text(), torque.node().scalar, std::nullopt,
+                                                      std::nullopt, item.expressions().parameters(), "joint torque");
   } catch (const std::invalid_argument& e) {
     torque.fail(torque.node().describe() + " (" + e.what() + ")", expected_torque);
   }
+  def.torque_uses_time = def.torque->position_uses_time();
   return def;
 }
 
@@ -56,11 +56,9 @@ void JointTorqueDefinition::build(const std::string& name, SceneBuildContext& co
   if (coordinate < 0 || coordinate >= target.nv)
     throw context.error(name, "coordinate", std::to_string(coordinate),
                         "0 to " + std::to_string(target.nv - 1) + " (the coordinates of joint '" + joint + "')");
-  auto function =
-      std::make_shared<const TimeFunction>(name, torque, std::nullopt, std::nullopt, parameters, "joint torque");
-  const bool depends_on_time = function->position_uses_time();
   context.system.add_force_element(std::make_unique<JointTorque>(
-      name, target.v_index + coordinate, [function](double t) { return function->position(t); }, depends_on_time));
+      name, target.v_index + coordinate, [function = torque](double t) { return function->position(t); },
+      torque_uses_time));
 }
 
 }  // namespace heavesim

@@ -3,8 +3,9 @@
 // the tree -- a motor torque [N m] on a rotation, a force [N] on a translation -- as a
 // muParser expression of time t [s] and the case's parameters, parsed as a driver's
 // `position` is (app/case/time_function.hpp). Kernel element: kernel/elements/joint_torque.hpp.
-#include <map>
+#include <memory>
 
+#include "app/case/time_function.hpp"
 #include "app/forces/force_kind.hpp"
 
 namespace heavesim {
@@ -19,8 +20,8 @@ struct JointTorqueDefinition {
 
   std::string joint;                          // a revolute, prismatic, cylindrical or universal joint
   int coordinate = 0;                         // which of its coordinates (0 for a 1-DoF joint)
-  std::string torque;                         // tau(t) [N m or N], a muParser expression of t
-  std::map<std::string, double> parameters;   // the case's named parameters the expression may read
+  std::shared_ptr<const TimeFunction> torque;  // tau(t) [N m or N], parsed from its expression of t
+  bool torque_uses_time = false;               // whether the expression reads t
 };
 
 }  // namespace heavesim

@@ -42,7 +42,7 @@ constexpr double u = 4e-2, ua = 1228e-5, ub = 449e-5, zf = 2e-2, zt = 4e-2, fa =
 
 /// The case's joints in the test set's coordinate order (beta, Theta, gamma, Phi,
 /// delta, Omega, epsilon): the map is the identity up to this order.
-constexpr std::array<const char*, 7> joint_names = {"beta", "Theta", "gamma", "Phi", "delta", "Omega", "epsilon"};
+constexpr const auto& joint_names = oracle::andrews_joint_names;
 
 /// M(q) of the test set (symmetric; only Theta, Phi, Omega enter).
 Matrix7 mass_matrix_closed_form(const Vector7& q) {

@@ -44,9 +44,8 @@ TEST(FailureDiagnosis, EveryIntegratorNamesTimePlaceAndRemedy) {
     const std::string label = failure.case_path + " with " + failure.integrator;
     const std::string output =
         (std::filesystem::temp_directory_path() / ("heavesim_failure_" + failure.integrator + ".h5")).string();
-    const testing::CommandResult result = testing::run_command_line(
-        testing::heavesim_binary() + " run -q " + testing::source_path(failure.case_path) + " --set solver.integrator=" +
-        failure.integrator + " --set solver.step=1e-3 -o " + output);
+    const testing::CommandResult result = testing::run_case(
+        failure.case_path, output, "-q --set solver.integrator=" + failure.integrator + " --set solver.step=1e-3");
     EXPECT_EQ(result.exit_code, 3) << label << ": " << result.output;
     std::smatch match;
     ASSERT_TRUE(std::regex_search(result.output, match, failure_time)) << label << ": " << result.output;

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "kernel/algorithms/energy.hpp"
+#include "kernel/elements/body_point.hpp"
 #include "validation/checks/validation_suite.hpp"
 #include "validation/oracles/iftomm_accuracy.hpp"
 #include "validation/oracles/simple_pendulum.hpp"
@@ -27,14 +27,11 @@ PendulumErrors compare_pendulum(const std::vector<std::string>& overrides) {
   std::vector<Eigen::Vector2d> positions;
   std::vector<double> energies;
   run_case("cases/validation/iftomm_a01_pendulum.yaml", overrides, [&](double t, const MultibodySystem& system) {
-    const Model& model = system.model();
-    const int bob = model.link_index("bob");
     // P1 is the bob's body point (1, 0, 0) (its centre of mass).
-    const Vector3 p1 =
-        system.data().X_world_link[bob].act_point(model.links[bob].X_link_body.act_point(Vector3(1, 0, 0)));
+    const Vector3 p1 = BodyPoint::on_body(system.model(), "bob", Vector3(1, 0, 0)).position_world(system.data());
     times.push_back(t);
     positions.emplace_back(p1.x(), p1.y());
-    energies.push_back(kinetic_energy(model, system.data()) + gravity_potential_energy(model, system.data()));
+    energies.push_back(mechanical_energy(system));
   });
   // Released at theta0 = pi/2 from the downward vertical, towards +x.
   const std::vector<Eigen::Vector2d> exact = oracle::pendulum_mass_positions(std::numbers::pi / 2, 1.0, 9.81, times);

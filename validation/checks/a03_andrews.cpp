@@ -21,27 +21,19 @@
 namespace heavesim::validation {
 namespace {
 
-/// The case's joints in the test set's coordinate order.
-constexpr std::array<const char*, oracle::andrews_coordinates> joint_names = {"beta",  "Theta", "gamma",  "Phi",
-                                                                               "delta", "Omega", "epsilon"};
-
 /// mescd at the last sample (t = 0.03 s) of the case run with `overrides`; -inf when
 /// the run fails.
 double run_mescd(const std::string& case_path, const std::vector<std::string>& overrides) {
   std::array<double, oracle::andrews_coordinates> last{};
   double last_time = -1.0;
-  try {
-    const RunOutcome outcome = run_case(case_path, overrides, [&](double t, const MultibodySystem& system) {
-      const Model& model = system.model();
-      for (int i = 0; i < oracle::andrews_coordinates; ++i)
-        last[i] = system.configuration()[model.joints[model.joint_index(joint_names[i])].q_index];
-      last_time = t;
-    });
-    if (!outcome.completed || std::abs(last_time - oracle::andrews_end_time) > 1e-12)
-      return -std::numeric_limits<double>::infinity();
-  } catch (const NumericalError&) {
+  const RunOutcome outcome = run_case_to_failure(case_path, overrides, [&](double t, const MultibodySystem& system) {
+    const Model& model = system.model();
+    for (int i = 0; i < oracle::andrews_coordinates; ++i)
+      last[i] = system.configuration()[model.joints[model.joint_index(oracle::andrews_joint_names[i])].q_index];
+    last_time = t;
+  });
+  if (!outcome.completed || std::abs(last_time - oracle::andrews_end_time) > 1e-12)
     return -std::numeric_limits<double>::infinity();
-  }
   return oracle::mixed_error_significant_digits(last, oracle::andrews_reference_positions);
 }
 

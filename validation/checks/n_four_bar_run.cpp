@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "validation/checks/validation_suite.hpp"
+#include "kernel/elements/body_point.hpp"
 #include "validation/oracles/four_bar_parallelogram.hpp"
 
 namespace heavesim::validation {
@@ -15,15 +16,11 @@ NFourBarErrors run_n_four_bar(const std::string& case_path, int windows) {
   std::vector<double> times;
   std::vector<Vector3> tip_positions;
   double branch_error = 0.0;
-  RunOutcome outcome;
-  try {
-    outcome = run_case(case_path, {}, [&](double t, const MultibodySystem& system) {
+  const RunOutcome outcome = run_case_to_failure(case_path, {}, [&](double t, const MultibodySystem& system) {
       const Model& model = system.model();
-      const Data& data = system.data();
       times.push_back(t);
       // coupler0's frame sits on crank0's tip, B0.
-      const int coupler0 = model.link_index("coupler0");
-      tip_positions.push_back(data.X_world_link[coupler0].act_point(model.links[coupler0].X_link_body.translation()));
+      tip_positions.push_back(BodyPoint::on_body(model, "coupler0", Vector3::Zero()).position_world(system.data()));
       const VectorX& q = system.configuration();
       const double q0 = q[model.joints[model.joint_index("pivot0")].q_index];
       for (int crank = 1; crank <= windows; ++crank)
@@ -35,11 +32,7 @@ NFourBarErrors run_n_four_bar(const std::string& case_path, int windows) {
         branch_error = std::max(branch_error, std::abs(crank + tip));  // coupler angle in the world
       }
     });
-  } catch (const NumericalError& error) {
-    outcome.completed = false;  // reported as an infinite error
-    outcome.time_reached = error.time();
-  }
-  NFourBarErrors errors;
+  NFourBarErrors errors;  // a run that stops is reported as an infinite error
   errors.completed = outcome.completed;
   errors.time_reached = outcome.time_reached;
   errors.tip_error = outcome.completed ? 0.0 : std::numeric_limits<double>::infinity();

@@ -3,7 +3,13 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "app/scene/scene.hpp"
 #include "app/version.hpp"
+#include "kernel/algorithms/energy.hpp"
 
 namespace heavesim::validation {
 
@@ -72,6 +78,37 @@ RunOutcome run_case(const std::string& relative_path, const std::vector<std::str
                           sample(t, *scene.system);
                           return true;
                         });
+}
+
+RunOutcome run_case_to_failure(const std::string& relative_path, const std::vector<std::string>& overrides,
+                               const std::function<void(double t, const MultibodySystem& system)>& sample) {
+  try {
+    return run_case(relative_path, overrides, sample);
+  } catch (const NumericalError& error) {
+    RunOutcome outcome;
+    outcome.completed = false;
+    outcome.time_reached = error.time();
+    return outcome;
+  }
+}
+
+std::vector<ValidationRow> assembly_structure_rows(const std::string& id, const std::string& label,
+                                                   const std::string& relative_path, int expected_redundant,
+                                                   int expected_mobility) {
+  const Scene scene = build_scene(load_case(project_file(relative_path)));
+  const ConstraintRank& rank = scene.assembly.rank;
+  const int redundant = static_cast<int>(rank.redundant_rows.size());
+  const int mobility = scene.model->nv - rank.rank;
+  const std::string subject = fmt::format("{} at assembly: {} rows, rank {}, {} redundant, mobility {}", label,
+                                          rank.rows, rank.rank, redundant, mobility);
+  return {{id, subject, fmt::format("redundant rows - {} (exact)", expected_redundant),
+           std::abs(redundant - static_cast<double>(expected_redundant)), 0.0},
+          {id, subject, fmt::format("mobility nv - rank - {} (exact)", expected_mobility),
+           std::abs(mobility - static_cast<double>(expected_mobility)), 0.0}};
+}
+
+double mechanical_energy(const MultibodySystem& system) {
+  return kinetic_energy(system.model(), system.data()) + gravity_potential_energy(system.model(), system.data());
 }
 
 }  // namespace heavesim::validation

@@ -36,6 +36,21 @@ std::string project_file(const std::string& relative_path);
 RunOutcome run_case(const std::string& relative_path, const std::vector<std::string>& overrides,
                     const std::function<void(double t, const MultibodySystem& system)>& sample);
 
+/// run_case, with a NumericalError reported as an incomplete outcome (completed =
+/// false, time_reached = the failure's time), for checks that score a run that
+/// stops as an infinite error.
+RunOutcome run_case_to_failure(const std::string& relative_path, const std::vector<std::string>& overrides,
+                               const std::function<void(double t, const MultibodySystem& system)>& sample);
+
+/// The two "structure at assembly" rows of an over-constrained case: its redundant
+/// rows and its mobility nv - rank against their exact values.
+std::vector<ValidationRow> assembly_structure_rows(const std::string& id, const std::string& label,
+                                                   const std::string& relative_path, int expected_redundant,
+                                                   int expected_mobility);
+
+/// Kinetic plus gravitational energy at the system's last evaluation [J].
+double mechanical_energy(const MultibodySystem& system);
+
 // The checks (one file each).
 std::vector<ValidationRow> check_k1_double_pendulum();
 std::vector<ValidationRow> check_k2_planar_chains();

@@ -26,6 +26,11 @@ inline constexpr std::array<double, andrews_coordinates> andrews_initial_positio
 /// The end of the test set's interval [s].
 inline constexpr double andrews_end_time = 0.03;
 
+/// The joints of cases/validation/iftomm_a03_andrews*.yaml in the test set's coordinate
+/// order: each joint's coordinate is that angle.
+inline constexpr std::array<const char*, andrews_coordinates> andrews_joint_names = {
+    "beta", "Theta", "gamma", "Phi", "delta", "Omega", "epsilon"};
+
 /// The test set's reference positions at t = 0.03 s [rad]: PSIDE with rtol = atol =
 /// 1e-14 (Cray C90 double precision), as published in the problem's reference
 /// solution. The angles beta and Theta have turned about 2.5 times.

@@ -15,9 +15,6 @@
 
 namespace heavesim::oracle {
 
-inline constexpr double iftomm_low_precision = 1e-1;
-inline constexpr double iftomm_high_precision = 1e-3;
-
 /// max over samples and coordinates of |run - reference| (same units as the samples).
 template <class Sample>
 double iftomm_max_error(const std::vector<Sample>& run, const std::vector<Sample>& reference) {
