@@ -1,9 +1,15 @@
-// Accuracy against run time (work-precision) for every integrator on four problems:
+// Accuracy against run time (work-precision) for every integrator on these problems:
 //   double_pendulum  V3, two uniform rods released horizontal, 10 s (chaotic)
 //   three_link       V4, three rods released horizontal, 5 s (chaotic: the reference
 //                    itself loses digits beyond ~5 s, as in validation K3)
 //   slider_crank     L1, SUNDIALS' idaSlCrank_dns mechanism, 10 s
 //   four_bar         L2, IFToMM A02 N = 1 through ten singular passes, 10 s
+//   a01_pendulum     IFToMM A01, point mass released horizontal, 10 s: P1 x, y [m]
+//   a03_andrews      IFToMM A03, Andrews' squeezing mechanism, 0.03 s: the test set's
+//                    mixed error at 0.03 s, 10^-mescd
+//   a04_bricard      IFToMM A04, Bricard's mechanism (1 redundant row), 10 s: P3 [m]
+//   a05_governor     IFToMM A05, stiff flyball governor, 10 s: slider s [m]
+// (the IFToMM accuracy measure: the largest coordinate error over the samples).
 // Each configuration runs the whole application path (YAML case with overrides ->
 // scene -> integrator); the error is the largest deviation from an independent
 // reference over the output samples (oracles integrated by ARKODE Fehlberg 8(7) at
@@ -18,11 +24,13 @@
 #include <time.h>
 #include <unistd.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -32,7 +40,14 @@
 #include "app/scene/scene.hpp"
 #include "samples/planar_chains.hpp"
 #include "validation/checks/validation_suite.hpp"
+#include "kernel/algorithms/kinematics.hpp"
+#include "kernel/elements/body_point.hpp"
+#include "validation/oracles/andrews_reference.hpp"
+#include "validation/oracles/bricard_mechanism.hpp"
+#include "validation/oracles/flyball_governor.hpp"
 #include "validation/oracles/four_bar_parallelogram.hpp"
+#include "validation/oracles/iftomm_accuracy.hpp"
+#include "validation/oracles/simple_pendulum.hpp"
 #include "validation/oracles/planar_chain_oracle.hpp"
 #include "validation/oracles/reference_integrator.hpp"
 #include "validation/oracles/slider_crank.hpp"
@@ -66,7 +81,8 @@ double minimum_cpu_time(const std::function<void()>& work) {
 }
 
 /// Joint positions at the output times, and the largest error of a run against the reference.
-using ErrorMeasure = std::function<double(const std::vector<double>& times, const std::vector<VectorX>& q)>;
+using ErrorMeasure =
+    std::function<double(const Model& model, const std::vector<double>& times, const std::vector<VectorX>& q)>;
 
 struct Problem {
   std::string name;
@@ -75,7 +91,73 @@ struct Problem {
   double output_interval;  // s
   ErrorMeasure error;
   std::string error_units;
+  bool closed_loop = false;   // adds IDA with KLU
+  double step_scale = 1.0;    // fixed steps (rk4, hht) are the default list times this
 };
+
+/// World positions of a body point at every sample, by the kinematics of the run's q.
+std::vector<Vector3> body_point_positions(const Model& model, const std::vector<VectorX>& q, const std::string& body,
+                                          const Vector3& point_body) {
+  Data data(model);
+  const BodyPoint point = BodyPoint::on_body(model, body, point_body);
+  std::vector<Vector3> positions;
+  for (const VectorX& configuration : q) {
+    update_positions(model, data, configuration);
+    positions.push_back(point.position_world(data));
+  }
+  return positions;
+}
+
+/// The coordinate of `joint` in every sample.
+std::vector<double> joint_coordinate(const Model& model, const std::vector<VectorX>& q, const std::string& joint) {
+  const int index = model.joints[model.joint_index(joint)].q_index;
+  std::vector<double> values;
+  for (const VectorX& configuration : q) values.push_back(configuration[index]);
+  return values;
+}
+
+/// IFToMM A01: the mass P1 (the bob's body point (1, 0, 0)) against the exact motion.
+double a01_pendulum_error(const Model& model, const std::vector<double>& times, const std::vector<VectorX>& q) {
+  std::vector<Eigen::Vector2d> positions;
+  for (const Vector3& p : body_point_positions(model, q, "bob", Vector3(1, 0, 0))) positions.emplace_back(p.x(), p.y());
+  return oracle::iftomm_max_error(positions, oracle::pendulum_mass_positions(M_PI / 2, 1.0, 9.81, times));
+}
+
+/// IFToMM A03: the test set's mixed error 10^-mescd of the 7 angles at t = 0.03 s.
+double a03_andrews_error(const Model& model, const std::vector<double>&, const std::vector<VectorX>& q) {
+  std::array<double, oracle::andrews_coordinates> last{};
+  for (int i = 0; i < oracle::andrews_coordinates; ++i)
+    last[i] = q.back()[model.joints[model.joint_index(oracle::andrews_joint_names[i])].q_index];
+  return std::pow(10.0, -oracle::mixed_error_significant_digits(last, oracle::andrews_reference_positions));
+}
+
+/// IFToMM A04: P3 (rod3's frame origin) against the independent formulation, after t = 0.
+ErrorMeasure a04_bricard_error() {
+  auto reference = std::make_shared<std::vector<Vector3>>();  // the oracle's, computed once
+  return [reference](const Model& model, const std::vector<double>& times, const std::vector<VectorX>& q) {
+    if (reference->empty())
+      for (const oracle::BricardSample& sample :
+           oracle::bricard_samples(std::vector<double>(times.begin() + 1, times.end()), 1e-12))
+        reference->push_back(sample.p3);
+    const std::vector<Vector3> p3 = body_point_positions(model, q, "rod3", Vector3::Zero());
+    return oracle::iftomm_max_error(std::vector<Vector3>(p3.begin() + 1, p3.end()), *reference);
+  };
+}
+
+/// IFToMM A05: the slider coordinate s against the reduced Lagrange model, after t = 0.
+ErrorMeasure a05_governor_error() {
+  auto reference = std::make_shared<std::vector<double>>();
+  return [reference](const Model& model, const std::vector<double>& times, const std::vector<VectorX>& q) {
+    if (reference->empty())
+      for (const oracle::FlyballGovernorState& state : oracle::flyball_governor_states(
+               oracle::FlyballGovernorParameters{}, std::vector<double>(times.begin() + 1, times.end()), 1e-12))
+        reference->push_back(state.slider_height);
+    const std::vector<double> s = joint_coordinate(model, q, "slide");
+    double error = 0.0;
+    for (std::size_t k = 1; k < s.size(); ++k) error = std::max(error, std::abs(s[k] - (*reference)[k - 1]));
+    return error;
+  };
+}
 
 double max_abs_difference(const std::vector<VectorX>& a, const std::vector<VectorX>& b) {
   double error = 0.0;
@@ -86,7 +168,7 @@ double max_abs_difference(const std::vector<VectorX>& a, const std::vector<Vecto
 /// Planar pendulum of n unit rods released at rest, all horizontal: absolute angles
 /// against the planar-chain oracle (validation K3's reference).
 ErrorMeasure pendulum_error(int links) {
-  return [links](const std::vector<double>& times, const std::vector<VectorX>& q) {
+  return [links](const Model&, const std::vector<double>& times, const std::vector<VectorX>& q) {
     const oracle::PlanarChainOracle reference(oracle::unit_rods(links));
     Eigen::VectorXd y0 = Eigen::VectorXd::Zero(2 * links);
     y0.head(links).setConstant(M_PI / 2);
@@ -104,7 +186,7 @@ ErrorMeasure pendulum_error(int links) {
   };
 }
 
-double slider_crank_error(const std::vector<double>& times, const std::vector<VectorX>& q) {
+double slider_crank_error(const Model&, const std::vector<double>& times, const std::vector<VectorX>& q) {
   const std::vector<Eigen::Vector3d> exact = oracle::slider_crank_positions({}, times, 1e-13);
   double error = 0.0;
   for (std::size_t k = 0; k < times.size(); ++k) error = std::max(error, (q[k].head<3>() - exact[k]).cwiseAbs().maxCoeff());
@@ -113,7 +195,7 @@ double slider_crank_error(const std::vector<double>& times, const std::vector<Ve
 
 /// First crank angle of A02 N = 1 (coordinate 0, pivot0) against the exact
 /// parallelogram motion: for the 1 m crank this is the tip B0's position error in m.
-double four_bar_error(const std::vector<double>& times, const std::vector<VectorX>& q) {
+double four_bar_error(const Model&, const std::vector<double>& times, const std::vector<VectorX>& q) {
   const std::vector<double> later(times.begin() + 1, times.end());
   const std::vector<double> exact = oracle::four_bar_crank_angles(1, 9.81, later, 1e-13);
   double error = 0.0;
@@ -154,7 +236,7 @@ Result measure(const Problem& problem, const Method& method, double parameter) {
                                         fmt::format("output.interval={}", problem.output_interval)};
   if (!method.linear_solver.empty()) overrides.push_back("solver.linear_solver=" + method.linear_solver);
   if (method.fixed_step) {
-    overrides.push_back(fmt::format("solver.step={}", parameter));
+    overrides.push_back(fmt::format("solver.step={}", parameter * problem.step_scale));
     // HHT's Newton iterations converge to a tolerance well below its truncation error.
     overrides.insert(overrides.end(), {"solver.rtol=1e-10", "solver.atol=1e-10"});
   } else {
@@ -188,7 +270,7 @@ Result measure(const Problem& problem, const Method& method, double parameter) {
     return result;
   }
   result.statistics = outcome.statistics;
-  result.error = problem.error(times, q);
+  result.error = problem.error(*scene.model, times, q);
   return result;
 }
 
@@ -225,7 +307,7 @@ Result measure_example() {
     q.push_back(positions);
   }
   Result result;
-  result.error = slider_crank_error(times, q);
+  result.error = slider_crank_error(Model(), times, q);
   result.cpu = minimum_cpu_time([] { run_example_to("/dev/null"); });
   return result;
 }
@@ -242,8 +324,13 @@ int main(int argc, char** argv) {
   const std::vector<Problem> problems = {
       {"double_pendulum", "cases/validation/two_link_horizontal.yaml", 10.0, 0.1, pendulum_error(2), "rad"},
       {"three_link", "cases/validation/three_link.yaml", 5.0, 0.1, pendulum_error(3), "rad"},
-      {"slider_crank", "cases/validation/slider_crank.yaml", 10.0, 0.25, slider_crank_error, "rad or m"},
-      {"four_bar", "cases/validation/iftomm_a02_n1.yaml", 10.0, 0.1, four_bar_error, "m"},
+      {"slider_crank", "cases/validation/slider_crank.yaml", 10.0, 0.25, slider_crank_error, "rad or m", true},
+      {"four_bar", "cases/validation/iftomm_a02_n1.yaml", 10.0, 0.1, four_bar_error, "m", true},
+      {"a01_pendulum", "cases/validation/iftomm_a01_pendulum.yaml", 10.0, 0.1, a01_pendulum_error, "m"},
+      {"a03_andrews", "cases/validation/iftomm_a03_andrews.yaml", 0.03, 1e-3, a03_andrews_error, "mixed", true, 0.01},
+      {"a04_bricard", "cases/validation/iftomm_a04_bricard.yaml", 10.0, 0.1, a04_bricard_error(), "m", true},
+      {"a05_governor", "cases/validation/iftomm_a05_flyball_governor.yaml", 10.0, 0.1, a05_governor_error(), "m", false,
+       0.1},
   };
   std::ofstream csv(csv_path);
   csv << "problem,integrator,linear_solver,parameter_name,parameter,error,error_units,cpu_s,steps,rhs_evaluations,"
@@ -262,7 +349,7 @@ int main(int argc, char** argv) {
 
   for (const Problem& problem : problems) {
     if (!only_problem.empty() && problem.name != only_problem) continue;
-    const bool closed_loop = problem.name == "slider_crank" || problem.name == "four_bar";
+    const bool closed_loop = problem.closed_loop;
     struct Best {
       std::string label;
       double cpu = std::numeric_limits<double>::infinity();
@@ -271,10 +358,11 @@ int main(int argc, char** argv) {
       if (!only_integrator.empty() && method.integrator != only_integrator) continue;
       for (double parameter : method.parameters) {
         const Result result = measure(problem, method, parameter);
-        write(problem, method.integrator, method.linear_solver, method.fixed_step ? "h" : "tol", parameter, result);
+        const double shown = method.fixed_step ? parameter * problem.step_scale : parameter;  // the step used
+        write(problem, method.integrator, method.linear_solver, method.fixed_step ? "h" : "tol", shown, result);
         if (result.error <= 1e-6 && result.cpu < best.cpu)
           best = {fmt::format("{}{} {}={:g}", method.integrator, method.linear_solver.empty() ? "" : " " + method.linear_solver,
-                              method.fixed_step ? "h" : "tol", parameter),
+                              method.fixed_step ? "h" : "tol", shown),
                   result.cpu};
       }
     }

@@ -24,6 +24,10 @@ TITLES = {
     "three_link": "3-link pendulum, 5 s from horizontal",
     "slider_crank": "slider-crank (idaSlCrank), 10 s",
     "four_bar": "four-bar A02 N = 1, 10 s (singular passes)",
+    "a01_pendulum": "IFToMM A01 pendulum, 10 s: P1 x, y [m]",
+    "a03_andrews": "IFToMM A03 Andrews, 0.03 s: mixed error 10^-mescd",
+    "a04_bricard": "IFToMM A04 Bricard, 10 s: P3 [m]",
+    "a05_governor": "IFToMM A05 flyball governor, 10 s: slider s [m]",
 }
 # Issue #3's targets: double pendulum to 1e-6 within 10 ms CPU.
 TARGETS = {"double_pendulum": (1e-6, 1e-2)}
