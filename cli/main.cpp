@@ -23,6 +23,9 @@ int main(int argc, char** argv) {
   run->add_option("--set", run_options.overrides, "override a case value: key.path=value (repeatable)")
       ->allow_extra_args(false);
   run->add_flag("-q,--quiet", run_options.quiet, "no progress line and no summary");
+  const std::string allow_large_help =
+      "run a case beyond the run-size limits (2 GiB of output, 1e9 steps; docs/case-format.md)";
+  run->add_flag("--allow-large-runs", run_options.allow_large_runs, allow_large_help);
 
   std::string check_path;
   std::vector<std::string> check_overrides;
@@ -30,6 +33,8 @@ int main(int argc, char** argv) {
   check->add_option("case", check_path, "case file (YAML)")->required();
   check->add_option("--set", check_overrides, "override a case value: key.path=value (repeatable)")
       ->allow_extra_args(false);
+  bool check_allow_large_runs = false;
+  check->add_flag("--allow-large-runs", check_allow_large_runs, allow_large_help);
 
   std::vector<std::string> validation_names;
   bool list_only = false;
@@ -45,7 +50,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(run_options);
-    if (*check) return check_command(check_path, check_overrides);
+    if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
     if (*validate) return validate_command(validation_names, list_only);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());

@@ -42,6 +42,25 @@ struct OutputSettings {
   double evaluate_after = 0.0;
 };
 
+/// What a run may ask of the machine. Beyond these a case is refused before running
+/// (exit code 2, at the key that makes the run large), unless the user allows large runs
+/// (`heavesim run/check --allow-large-runs`); beyond `largest_count` it is refused in
+/// any case.
+struct RunLimits {
+  /// Bytes of recorded samples (samples x columns x 8 bytes): a result file that fits in
+  /// memory and on disk of an ordinary machine, and that h5py/numpy read in one piece.
+  /// The CSV text of the same samples is about three times larger.
+  static constexpr double max_output_bytes = 2.0 * 1024 * 1024 * 1024;
+  /// Integration steps (fixed-step methods: duration / step; variable-step ones: at
+  /// least duration / max_step and one per output sample): at the ~1 us a step of the
+  /// smallest model takes, 1e9 steps are about 20 minutes; real models take 10-100x.
+  static constexpr double max_steps = 1e9;
+  /// Steps or samples no run can do, allowed or not: at 1 ns each, 1e15 take 11 days,
+  /// and counts beyond it lose their meaning in the run loop's arithmetic.
+  static constexpr double largest_count = 1e15;
+  bool allow_large_runs = false;
+};
+
 struct CaseDefinition {
   std::string name;
   std::string description;
@@ -61,6 +80,7 @@ struct CaseDefinition {
   std::map<std::string, JointInitialState> initial_states;  // by joint name
   SolverSettings solver;
   OutputSettings output;
+  RunLimits limits;
 
   /// Where every key of the resolved case came from, by key path ("joints[2].axis",
   /// "forces[0].stroke.joint", "waves.hs"): the one source map into which errors found
@@ -82,8 +102,10 @@ struct CaseDefinition {
 };
 
 /// Loads, composes (includes, --set overrides) and checks a case file. Throws
-/// InputError for anything malformed; nothing is run.
-CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {});
+/// InputError for anything malformed or, unless `allow_large_runs`, too large to run
+/// (RunLimits); nothing is run.
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {},
+                         bool allow_large_runs = false);
 
 /// Converts a kernel ModelError into an InputError pointing into the case.
 InputError to_input_error(const CaseDefinition& definition, const ModelError& error);

@@ -1,5 +1,7 @@
 // Reads the case schema documented in docs/case-format.md.
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -11,6 +13,7 @@
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"
+#include "kernel/system/ode_system.hpp"
 #include "kernel/spatial/rotation.hpp"
 
 #include <filesystem>
@@ -62,7 +65,7 @@ Transform read_frame(const std::optional<NodeReader>& reader) {
   if (!reader) return Transform::Identity();
   reader->expect_section("frame");
   Transform frame;
-  if (auto position = reader->optional("position")) frame.translation() = position->vector3();
+  if (auto position = reader->optional("position")) frame.translation() = position->vector3_in(length_range);
   if (auto orientation = reader->optional("orientation")) frame.rotation() = read_orientation(*orientation);
   return frame;
 }
@@ -73,15 +76,15 @@ Matrix3 read_inertia(const NodeReader& reader) {
   double ixx, iyy, izz, ixy = 0.0, ixz = 0.0, iyz = 0.0;
   if (reader.node().is_map()) {
     reader.expect_section("inertia");
-    ixx = reader["ixx"].number();
-    iyy = reader["iyy"].number();
-    izz = reader["izz"].number();
-    ixy = reader.number_or("ixy", 0.0);
-    ixz = reader.number_or("ixz", 0.0);
-    iyz = reader.number_or("iyz", 0.0);
+    ixx = reader["ixx"].number_in(inertia_range);
+    iyy = reader["iyy"].number_in(inertia_range);
+    izz = reader["izz"].number_in(inertia_range);
+    for (auto [value, key] : {std::pair{&ixy, "ixy"}, std::pair{&ixz, "ixz"}, std::pair{&iyz, "iyz"}})
+      if (auto product = reader.optional(key)) *value = product->number_in(inertia_range);
   } else {
-    const std::vector<double> values =
-        reader.node().is_sequence() ? reader.numbers() : std::vector<double>{};
+    std::vector<double> values;
+    if (reader.node().is_sequence())
+      for (const NodeReader& item : reader.items()) values.push_back(item.number_in(inertia_range));
     if (values.size() != 3 && values.size() != 6)
       reader.fail("[ixx, iyy, izz], [ixx, iyy, izz, ixy, ixz, iyz] or a map {ixx: .., ...} (kg m^2 about the CoM)");
     ixx = values[0];
@@ -106,8 +109,9 @@ void read_bodies(const NodeReader& section, CaseDefinition& definition) {
     const std::string name = name_reader.text();
     if (name == ModelBuilder::ground_name) name_reader.fail("'ground', which is reserved for the world", "another name");
     if (!names.insert(name).second) name_reader.fail("'" + name + "' a second time", "a unique body name");
-    const double mass = body["mass"].number();
-    const Vector3 com = body.optional("center_of_mass") ? body["center_of_mass"].vector3() : Vector3::Zero();
+    const double mass = body["mass"].number_in(mass_range);
+    const Vector3 com =
+        body.optional("center_of_mass") ? body["center_of_mass"].vector3_in(length_range) : Vector3::Zero();
     const Matrix3 inertia = read_inertia(body["inertia"]);
     definition.bodies.push_back(BodyDefinition{name, Inertia(mass, com, inertia), std::nullopt});
     definition.body_paths[name] = body.path();
@@ -206,7 +210,7 @@ JointInitialState read_initial_state(const std::optional<NodeReader>& reader, co
   } else if (spherical || free) {
     R = quaternion_from_wxyz(state.q.segment<4>(quaternion_offset)).toRotationMatrix();
   }
-  if (auto position = reader->optional("position")) state.q.head<3>() = position->vector3();
+  if (auto position = reader->optional("position")) state.q.head<3>() = position->vector3_in(length_range);
   // Named velocities are given in the parent frame; the kernel's are child-side (body) axes.
   if (auto omega = reader->optional("angular_velocity")) state.v.head<3>() = R.transpose() * omega->vector3();
   if (auto velocity = reader->optional("velocity")) state.v.tail<3>() = R.transpose() * velocity->vector3();
@@ -308,9 +312,10 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       def.name = name;
       def.body_a = item["body_a"].text();
       def.body_b = item["body_b"].text();
-      if (auto point = item.optional("point_a")) def.point_a = point->vector3();
-      if (auto point = item.optional("point_b")) def.point_b = point->vector3();
+      if (auto point = item.optional("point_a")) def.point_a = point->vector3_in(length_range);
+      if (auto point = item.optional("point_b")) def.point_b = point->vector3_in(length_range);
       def.distance = item["distance"].positive_number();
+      item["distance"].number_in(length_range);
       definition.distance_constraints.push_back(std::move(def));
     } else {
       item.expect_section("coupler");
@@ -361,44 +366,118 @@ void read_drivers(const NodeReader& section, CaseDefinition& definition, std::se
   }
 }
 
-/// Explicit driver derivatives must be the derivatives of the position: compared with
-/// central differences at 21 times over the run (a typo in `velocity` would otherwise
-/// fight the position constraint).
+/// The times at which a case's expressions of t are evaluated before the run: the
+/// output times or 1000 points over the run, whichever is finer (at most 1e5, so that
+/// `check` stays quick), t_end included.
+std::vector<double> expression_check_times(const CaseDefinition& definition) {
+  const double t0 = definition.solver.t_start, t1 = definition.solver.t_end;
+  const double samples = (t1 - t0) / definition.output.interval;
+  const long intervals = static_cast<long>(std::clamp(std::ceil(samples), 1000.0, 1e5));
+  std::vector<double> times;
+  times.reserve(intervals + 1);
+  for (long k = 0; k < intervals; ++k) times.push_back(t0 + (t1 - t0) * static_cast<double>(k) / intervals);
+  times.push_back(t1);
+  return times;
+}
+
+/// Refuses at `key_path` an expression of t that is not finite somewhere in the run
+/// (sqrt(1 - t) on a 2 s run): bad input, found before running rather than reported as
+/// a numerical failure when the run reaches it. `differenced`: its derivatives come
+/// from central differences, which also read it 2 difference steps either side.
+void check_finite_over_run(const TimeFunction& function, bool differenced, const std::vector<double>& times,
+                           const CaseDefinition& definition, const std::string& key_path) {
+  try {
+    for (const double t : times)
+      if (differenced)
+        function(t);
+      else
+        function.position(t);
+  } catch (const NumericalError& error) {
+    throw definition.error_at(
+        key_path, fmt::format("{} at t = {:.6g} s", error.what(), error.time()),
+        fmt::format("an expression of t that is finite over the whole run, t = {:g} .. {:g} s{}",
+                    definition.solver.t_start, definition.solver.t_end,
+                    differenced ? fmt::format(" (and {:g} s either side, where the central differences that stand "
+                                              "in for velocity and acceleration read it)",
+                                              2 * TimeFunction::difference_step)
+                                : ""));
+  }
+}
+
+/// Every expression of t in the case -- each driver's position, velocity and
+/// acceleration, each joint torque -- evaluated over the run before it starts.
+void check_expressions_over_run(const CaseDefinition& definition, const ExpressionContext& expressions,
+                                const std::optional<NodeReader>& drivers) {
+  const std::vector<double> times = expression_check_times(definition);
+  if (drivers) {
+    const std::vector<NodeReader> items = drivers->items();
+    for (std::size_t d = 0; d < definition.drivers.size(); ++d) {
+      const bool differenced = !items[d].has("velocity");
+      for (const char* key : {"position", "velocity", "acceleration"}) {
+        const std::optional<NodeReader> expression = items[d].optional(key);
+        if (!expression) continue;
+        const TimeFunction alone(definition.drivers[d].name, expression->node().scalar, std::nullopt, std::nullopt,
+                                 expressions.parameters());
+        check_finite_over_run(alone, differenced && std::string(key) == "position", times, definition,
+                              expression->path());
+      }
+    }
+  }
+  for (const ForceDefinition& force : definition.forces)
+    if (const auto* torque = std::get_if<JointTorqueDefinition>(&force.kind))
+      check_finite_over_run(*torque->torque, false, times, definition, definition.item_paths.at(force.name) + ".torque");
+}
+
+/// Explicit driver derivatives must be the derivatives of the position (a typo in
+/// `velocity` would otherwise fight the position constraint): compared with central
+/// differences at 21 times over the run. The tolerance at each time is the
+/// differences' own error -- truncation, taken as 1e-5 (velocity) and 1e-4
+/// (acceleration) of the derivative's scale over the run, and round-off: each value of
+/// the stencil is off by about eps (|x| + |t v|) (the expression's rounding and that of
+/// t), amplified by the stencil's weights, (1 + 8 + 8 + 1) / (12 h) and
+/// (1 + 16 + 30 + 16 + 1) / (12 h^2). The scale of the acceleration includes v / T
+/// (T: the run's duration), so that a true acceleration of 0 does not make the
+/// tolerance collapse to round-off alone.
 void check_driver_derivatives(const CaseDefinition& definition, const ExpressionContext& expressions,
                               const NodeReader& section) {
   const std::vector<NodeReader> items = section.items();
+  const double h = TimeFunction::difference_step, eps = std::numeric_limits<double>::epsilon();
+  constexpr double round_off_margin = 4.0;  // the bound is a worst case: 1.14e-6 seen where it gives 8.2e-6
   for (std::size_t d = 0; d < definition.drivers.size(); ++d) {
     const NodeReader& item = items[d];
     if (!item.has("velocity")) continue;
     const TimeFunction differenced(definition.drivers[d].name, item["position"].node().scalar, std::nullopt,
                                    std::nullopt, expressions.parameters());
-    const double t0 = definition.solver.t_start, t1 = definition.solver.t_end;
-    double scale_p = 0.0, scale_v = 0.0, scale_a = 0.0, error_v = 0.0, error_a = 0.0, worst_v = t0, worst_a = t0;
+    const double t0 = definition.solver.t_start, t1 = definition.solver.t_end, duration = t1 - t0;
+    std::vector<double> times;
+    std::vector<DriverMotion> given, reference;
+    double scale_v = 0.0, scale_a = 0.0;
     for (int k = 0; k <= 20; ++k) {
-      const double t = t0 + (t1 - t0) * k / 20.0;
-      const DriverMotion given = definition.drivers[d].motion(t), reference = differenced(t);
-      scale_p = std::max(scale_p, std::abs(reference.position));
-      scale_v = std::max(scale_v, std::abs(reference.velocity));
-      scale_a = std::max(scale_a, std::abs(reference.acceleration));
-      if (std::abs(given.velocity - reference.velocity) > error_v)
-        error_v = std::abs(given.velocity - reference.velocity), worst_v = t;
-      if (std::abs(given.acceleration - reference.acceleration) > error_a)
-        error_a = std::abs(given.acceleration - reference.acceleration), worst_a = t;
+      times.push_back(t0 + duration * k / 20.0);
+      given.push_back(definition.drivers[d].motion(times.back()));
+      reference.push_back(differenced(times.back()));
+      scale_v = std::max(scale_v, std::abs(given.back().velocity));
+      scale_a = std::max(scale_a, std::abs(given.back().acceleration));
     }
-    // Beyond the differences' truncation, their round-off: eps |f| (1 + 8 + 8 + 1) / (12 h)
-    // for the first derivative, eps |f| (1 + 16 + 30 + 16 + 1) / (12 h^2) for the
-    // second; x = 1 + t with acceleration 0 was rejected by 7e-10 without it.
-    const double h = TimeFunction::difference_step, eps = std::numeric_limits<double>::epsilon();
-    const double round_off_v = 10.0 * eps * scale_p * 18.0 / (12.0 * h);
-    const double round_off_a = 10.0 * eps * scale_p * 64.0 / (12.0 * h * h);
-    if (error_v > 1e-5 * (scale_v + 1e-9) + round_off_v)
-      item["velocity"].fail(fmt::format("a velocity that differs from d(position)/dt by {:.3g} at t = {:g} s",
-                                        error_v, worst_v),
-                            "the exact time derivative of position");
-    if (error_a > 1e-4 * (scale_a + 1e-9) + round_off_a)
-      item["acceleration"].fail(fmt::format("an acceleration that differs from d2(position)/dt2 by {:.3g} at t = {:g} s",
-                                            error_a, worst_a),
-                                "the exact second time derivative of position");
+    scale_a = std::max(scale_a, scale_v / duration);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const double value_error =
+          round_off_margin * eps * (std::abs(reference[k].position) + std::abs(times[k] * given[k].velocity));
+      const double tolerance_v = 1e-5 * scale_v + value_error * 18.0 / (12.0 * h);
+      const double tolerance_a = 1e-4 * scale_a + value_error * 64.0 / (12.0 * h * h);
+      const double error_v = std::abs(given[k].velocity - reference[k].velocity);
+      const double error_a = std::abs(given[k].acceleration - reference[k].acceleration);
+      if (!(error_v <= tolerance_v))
+        item["velocity"].fail(fmt::format("a velocity that differs from d(position)/dt by {:.3g} at t = {:g} s "
+                                          "(tolerance {:.3g})",
+                                          error_v, times[k], tolerance_v),
+                              "the exact time derivative of position");
+      if (!(error_a <= tolerance_a))
+        item["acceleration"].fail(fmt::format("an acceleration that differs from d2(position)/dt2 by {:.3g} at t = "
+                                              "{:g} s (tolerance {:.3g})",
+                                              error_a, times[k], tolerance_a),
+                                  "the exact second time derivative of position");
+    }
   }
 }
 
@@ -410,6 +489,28 @@ void read_forces(const NodeReader& section, CaseDefinition& definition, std::set
 }
 
 // ---------------------------------------------------------------- solver, output
+
+/// Refuses at `key` a run of `count` steps or samples `spacing` apart (`what`: "steps",
+/// "output samples") that it cannot do: beyond RunLimits::largest_count or too fine for
+/// the clock to resolve (t + spacing == t: it would never advance) in any case; beyond
+/// `limit` unless large runs are allowed.
+void check_run_count(const NodeReader& key, const CaseDefinition& definition, double spacing, double limit,
+                     const std::string& what) {
+  const SolverSettings& solver = definition.solver;
+  const double duration = solver.t_end - solver.t_start, count = duration / spacing;
+  const double clock = std::max(std::abs(solver.t_start), std::abs(solver.t_end));
+  const double resolution = 1e3 * std::numeric_limits<double>::epsilon() * clock;
+  const std::string found = fmt::format("{:g} s, {:.3g} {} over the {:g} s run", spacing, count, what, duration);
+  if (!(count <= RunLimits::largest_count) || spacing < resolution)
+    key.fail(found, fmt::format("at most {:g} {} {:g} s or more apart (no run can do more: at t = {:g} s the clock "
+                                "resolves {:.3g} s)",
+                                RunLimits::largest_count, what, std::max(resolution, duration / RunLimits::largest_count),
+                                clock, resolution));
+  if (count > limit && !definition.limits.allow_large_runs)
+    key.fail(found, fmt::format("at most {:g} {} (a spacing of {:.3g} s or more), or --allow-large-runs for a run "
+                                "meant to be this large",
+                                limit, what, duration / limit));
+}
 
 void read_solver(const NodeReader& reader, CaseDefinition& definition) {
   reader.expect_section("solver");
@@ -432,6 +533,8 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
     solver.integrator.step = step->positive_number();
     if (solver.integrator.step > solver.t_end - solver.t_start)
       step->fail(fmt::format("a step of {:g} s longer than the run", solver.integrator.step), "step <= t_end - t_start");
+    if (solver.integrator.method == IntegrationMethod::rk4 || solver.integrator.method == IntegrationMethod::hht)
+      check_run_count(*step, definition, solver.integrator.step, RunLimits::max_steps, "fixed steps");
   } else if (solver.integrator.method == IntegrationMethod::rk4 || solver.integrator.method == IntegrationMethod::hht) {
     reader["step"];  // required for the fixed-step methods: raises the missing-key error
   }
@@ -447,7 +550,11 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
     if (solver.integrator.relative_tolerance < 1e-15) rtol->fail("a tolerance below machine precision", "rtol >= 1e-15");
   }
   if (auto atol = reader.optional("atol")) solver.integrator.absolute_tolerance = atol->positive_number();
-  if (auto max_step = reader.optional("max_step")) solver.integrator.max_step = max_step->non_negative_number();
+  if (auto max_step = reader.optional("max_step")) {
+    solver.integrator.max_step = max_step->non_negative_number();  // 0: no bound
+    if (solver.integrator.max_step > 0.0)
+      check_run_count(*max_step, definition, solver.integrator.max_step, RunLimits::max_steps, "adaptive steps (at least)");
+  }
   if (auto max_steps = reader.optional("max_steps")) {
     solver.integrator.max_steps_per_output = max_steps->integer();
     if (solver.integrator.max_steps_per_output <= 0) max_steps->fail("a positive whole number");
@@ -466,11 +573,17 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
                           : ForwardDynamicsMethod::composite_rigid_body;
 }
 
-void read_output(const std::optional<NodeReader>& reader, CaseDefinition& definition) {
+/// Every output sample is at least one step of any method: their number is refused at
+/// output.interval (or at solver.t_end when the interval is the default), like steps.
+void read_output(const std::optional<NodeReader>& reader, const NodeReader& solver, CaseDefinition& definition) {
   OutputSettings& output = definition.output;
   const double duration = definition.solver.t_end - definition.solver.t_start;
   output.interval = std::min(0.01, duration / 100.0);
   output.evaluate_after = definition.solver.t_start + 0.5 * duration;
+  const std::optional<NodeReader> interval = reader ? reader->optional("interval") : std::nullopt;
+  if (!interval)
+    check_run_count(solver["t_end"], definition, output.interval, RunLimits::max_steps,
+                    "output samples (the default interval)");
   if (!reader) return;
   reader->expect_section("output");
   if (auto evaluate_after = reader->optional("evaluate_after")) {
@@ -478,11 +591,12 @@ void read_output(const std::optional<NodeReader>& reader, CaseDefinition& defini
     if (output.evaluate_after < definition.solver.t_start || output.evaluate_after >= definition.solver.t_end)
       evaluate_after->fail(fmt::format("{:g} s, outside the run", output.evaluate_after), "t_start <= evaluate_after < t_end");
   }
-  if (auto interval = reader->optional("interval")) {
+  if (interval) {
     output.interval = interval->positive_number();
     if (output.interval > duration)
       interval->fail(fmt::format("an interval of {:g} s longer than the run", output.interval),
                      "interval <= t_end - t_start");
+    check_run_count(*interval, definition, output.interval, RunLimits::max_steps, "output samples");
   }
   if (auto channels = reader->optional("channels")) {
     output.bodies = output.joints = output.reactions = output.energy = output.forces = false;
@@ -525,12 +639,13 @@ void read_parameters(const std::optional<NodeReader>& reader, ExpressionContext&
 
 }  // namespace
 
-CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides) {
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides, bool allow_large_runs) {
   CaseNode tree = load_case_tree(path);
   for (const std::string& assignment : overrides) apply_override(tree, assignment);
 
   CaseDefinition definition;
   definition.source_path = path;
+  definition.limits.allow_large_runs = allow_large_runs;
   definition.resolved_yaml = to_yaml_text(tree);
   record_sources(tree, "", definition.sources);
   ExpressionContext expressions;
@@ -558,8 +673,9 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   if (auto section = root.optional("drivers")) read_drivers(*section, definition, names, expressions);
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   read_solver(root["solver"], definition);
+  read_output(root.optional("output"), root["solver"], definition);
+  check_expressions_over_run(definition, expressions, root.optional("drivers"));
   if (auto section = root.optional("drivers")) check_driver_derivatives(definition, expressions, *section);
-  read_output(root.optional("output"), definition);
   return definition;
 }
 

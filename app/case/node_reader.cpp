@@ -88,13 +88,31 @@ std::optional<NodeReader> NodeReader::optional(const std::string& key) const {
   return NodeReader(*child, path_.empty() ? key : path_ + "." + key, *expressions_);
 }
 
-double NodeReader::number() const {
+double NodeReader::evaluate() const {
   if (!node_->is_scalar()) fail("a number or an expression such as deg(90)");
   try {
     return expressions_->evaluate(node_->scalar);
   } catch (const std::invalid_argument& e) {
     fail(node_->describe() + " (" + e.what() + ")", "a number or an expression such as deg(90)");
   }
+}
+
+double NodeReader::number() const { return number_in(any_number); }
+
+double NodeReader::number_in(const QuantityRange& range) const {
+  const double value = evaluate();
+  check_range(value, range);
+  return value;
+}
+
+void NodeReader::check_range(double value, const QuantityRange& range) const {
+  if (value >= range.lower && value <= range.upper) return;
+  const std::string unit = range.unit.empty() ? "" : " " + std::string(range.unit);
+  const std::string value_text = fmt::format("{:g}", value);
+  const std::string given = !node_->is_scalar()          ? node_->describe()
+                            : node_->scalar == value_text ? value_text
+                                                          : fmt::format("{} (= {})", node_->describe(), value_text);
+  fail(given, fmt::format("{} in [{:g}, {:g}]{}", range.kind, range.lower, range.upper, unit));
 }
 
 double NodeReader::number_or(const std::string& key, double default_value) const {
@@ -165,6 +183,12 @@ Vector3 NodeReader::vector3() const {
   if (!node_->is_sequence() || node_->items.size() != 3) fail("a list of 3 numbers [x, y, z]");
   const std::vector<double> values = numbers();
   return Vector3(values[0], values[1], values[2]);
+}
+
+Vector3 NodeReader::vector3_in(const QuantityRange& range) const {
+  if (!node_->is_sequence() || node_->items.size() != 3) fail("a list of 3 numbers [x, y, z]");
+  const std::vector<NodeReader> components = items();
+  return Vector3(components[0].number_in(range), components[1].number_in(range), components[2].number_in(range));
 }
 
 Vector3 NodeReader::unit_vector3() const {

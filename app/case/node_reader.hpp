@@ -9,6 +9,7 @@
 
 #include "app/case/case_node.hpp"
 #include "app/case/expression.hpp"
+#include "app/case/quantity_range.hpp"
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
@@ -38,7 +39,11 @@ class NodeReader {
   std::optional<NodeReader> optional(const std::string& key) const;
 
   // --- scalars ---
+  /// A finite number within any_number (app/case/quantity_range.hpp): NaN, infinity and
+  /// magnitudes whose products overflow are refused at their key.
   double number() const;
+  /// A number within `range` (a length, a mass, ...), which replaces any_number.
+  double number_in(const QuantityRange& range) const;
   double number_or(const std::string& key, double default_value) const;
   double positive_number() const;
   double non_negative_number() const;
@@ -53,6 +58,8 @@ class NodeReader {
   std::vector<NodeReader> items() const;
   std::vector<double> numbers() const;
   Vector3 vector3() const;
+  /// A 3-vector whose components are all within `range` (a position: length_range).
+  Vector3 vector3_in(const QuantityRange& range) const;
   /// A 3-vector of length 1 (tolerance 1e-6).
   Vector3 unit_vector3() const;
 
@@ -61,6 +68,10 @@ class NodeReader {
 
  private:
   void expect_keys(const std::vector<std::string_view>& allowed) const;
+  /// The scalar's value as an expression, unchecked.
+  double evaluate() const;
+  /// Fails unless lower <= value <= upper (so NaN fails too).
+  void check_range(double value, const QuantityRange& range) const;
 
   const CaseNode* node_;
   std::string path_;

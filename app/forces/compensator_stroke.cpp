@@ -59,7 +59,7 @@ double absolute_pressure(const NodeReader& node, double atmospheric, const std::
 
 std::pair<std::string, Vector3> read_body_point(const NodeReader& reader) {
   reader.expect_section("body_point");
-  return {reader["body"].text(), reader.optional("point") ? reader["point"].vector3() : Vector3::Zero()};
+  return {reader["body"].text(), reader.optional("point") ? reader["point"].vector3_in(length_range) : Vector3::Zero()};
 }
 
 StrokeDefinition read_stroke(const NodeReader& reader) {

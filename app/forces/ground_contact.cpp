@@ -28,7 +28,7 @@ GroundContactDefinition GroundContactDefinition::read(const NodeReader& item, co
   def.stiffness = item["stiffness"].positive_number();
   def.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
   def.preload = item.optional("preload") ? item["preload"].non_negative_number() : 0.0;
-  if (auto p = item.optional("point")) def.point = p->vector3();
+  if (auto p = item.optional("point")) def.point = p->vector3_in(length_range);
   return def;
 }
 

@@ -24,7 +24,7 @@ PointForceDefinition PointForceDefinition::read(const NodeReader& item, const Ca
   item.expect_section(type);
   def.body = item["body"].text();
   def.force_world = item["force"].vector3();
-  if (auto point = item.optional("point")) def.point = point->vector3();
+  if (auto point = item.optional("point")) def.point = point->vector3_in(length_range);
   return def;
 }
 

@@ -27,11 +27,11 @@ SpringDamperDefinition SpringDamperDefinition::read(const NodeReader& item, cons
   item.expect_section(type);
   def.body_a = item["body_a"].text();
   def.body_b = item["body_b"].text();
-  if (auto point = item.optional("point_b")) def.point_b = point->vector3();
+  if (auto point = item.optional("point_b")) def.point_b = point->vector3_in(length_range);
   def.spring.stiffness = item.optional("stiffness") ? item["stiffness"].non_negative_number() : 0.0;
   def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
   def.spring.rest_length = item["rest_length"].non_negative_number();
-  if (auto point = item.optional("point_a")) def.point_a = point->vector3();
+  if (auto point = item.optional("point_a")) def.point_a = point->vector3_in(length_range);
   return def;
 }
 

@@ -51,6 +51,7 @@ hydro::WaveTrain unchecked_wave_train(const CaseDefinition& definition) {
   if (waves.type == WaveDefinition::Type::jonswap)
     return hydro::irregular_sea(hydro::Jonswap(waves.significant_height, waves.peak_period, waves.peak_enhancement),
                                 settings);
+  hydro::check_sea_state(waves.significant_height, waves.peak_period);
   return hydro::irregular_sea(hydro::PiersonMoskowitz{waves.significant_height, waves.peak_period}, settings);
 }
 

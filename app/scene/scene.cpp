@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/scene/hydro_scene.hpp"
+#include "app/scene/run_size.hpp"
 
 #include "app/scene/scene_build_context.hpp"
 #include "kernel/algorithms/kinematics.hpp"
@@ -112,6 +113,7 @@ Scene build_scene(const CaseDefinition& definition) {
   build_forces(BuildStage::compensators, context);
   for (const auto& check : context.after_build) check();
   scene.initial_state = scene.system->initial_state(q0, v0);
+  check_run_size(definition, scene);
   return scene;
 }
 

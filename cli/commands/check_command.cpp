@@ -6,8 +6,8 @@
 
 namespace heavesim {
 
-int check_command(const std::string& case_path, const std::vector<std::string>& overrides) {
-  const CaseDefinition definition = load_case(case_path, overrides);
+int check_command(const std::string& case_path, const std::vector<std::string>& overrides, bool allow_large_runs) {
+  const CaseDefinition definition = load_case(case_path, overrides, allow_large_runs);
   const Scene scene = build_scene(definition);
   const Model& model = *scene.model;
 

@@ -12,10 +12,12 @@ struct RunOptions {
   std::string csv_directory;           // empty: no CSV
   std::vector<std::string> overrides;  // --set key=value
   bool quiet = false;
+  bool allow_large_runs = false;       // --allow-large-runs: past RunLimits (app/case/case_definition.hpp)
 };
 
 int run_command(const RunOptions& options);
-int check_command(const std::string& case_path, const std::vector<std::string>& overrides);
+int check_command(const std::string& case_path, const std::vector<std::string>& overrides,
+                  bool allow_large_runs = false);
 struct Scene;
 /// Loops, rank, redundant equations and assembly of a scene (nothing for a tree).
 void print_loop_summary(const Scene& scene);

@@ -58,7 +58,7 @@ class ProgressLine {
 }  // namespace
 
 int run_command(const RunOptions& options) {
-  const CaseDefinition definition = load_case(options.case_path, options.overrides);
+  const CaseDefinition definition = load_case(options.case_path, options.overrides, options.allow_large_runs);
   Scene scene = build_scene(definition);
   if (!options.quiet) print_loop_summary(scene);
 

@@ -20,10 +20,19 @@ Matrix6 interpolated_damping(const RadiationData& r, double w, double taper) {
 }
 
 RetardationKernel retardation_kernel(const RadiationData& r, double duration, double dt, double taper) {
+  if (!(duration > 0.0 && duration <= max_kernel_duration))
+    throw ParameterError("kernel_duration", fmt::format("a kernel of {:g} s", duration),
+                         fmt::format("0 < kernel_duration <= {:g} s", max_kernel_duration));
   // Ten samples at least: a coarser kernel resolves neither its decay nor its oscillation.
-  if (!(dt > 0.0) || !(duration > 0.0) || dt * 10 > duration)
+  if (!(dt > 0.0) || dt * 10 > duration)
     throw ParameterError("kernel_step", fmt::format("a step of {:g} s for a kernel of {:g} s", dt, duration),
                          "kernel_step <= kernel_duration / 10");
+  if (duration / dt > max_kernel_samples - 1)
+    throw ParameterError("kernel_step",
+                         fmt::format("a step of {:g} s: {:.3g} samples for a kernel of {:g} s", dt, duration / dt + 1,
+                                     duration),
+                         fmt::format("at most {} samples: kernel_step >= kernel_duration / {} = {:.3g} s",
+                                     max_kernel_samples, max_kernel_samples - 1, duration / (max_kernel_samples - 1)));
   // Knots of the piecewise-linear B: (0, 0) then the BEM points.
   std::vector<double> w{0.0};
   std::vector<Matrix6> b{Matrix6::Zero()};

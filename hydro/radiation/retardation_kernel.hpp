@@ -20,8 +20,18 @@ struct RetardationKernel {
   double duration() const { return time_step * (values.size() - 1); }
 };
 
+/// The longest kernel [s]: radiation memory of floating structures decays within a
+/// few minutes (the cases' kernels are 60-120 s long); an hour holds any of them.
+inline constexpr double max_kernel_duration = 3600.0;
+/// The most samples a kernel may have: 1e5 Matrix6 are 29 MB, computed in about a
+/// second from a few hundred BEM frequencies; the convolution memory reads all of
+/// them at every evaluation (the default kernel has 1201).
+inline constexpr int max_kernel_samples = 100000;
+
 /// K(t) on [0, duration] [s] with step dt [s] from B(w) of `radiation`.
-/// Throws ParameterError("kernel_step") unless 0 < time_step <= duration / 10.
+/// Throws ParameterError("kernel_duration") unless 0 < duration <= max_kernel_duration,
+/// ParameterError("kernel_step") unless duration / max_kernel_samples <= time_step <=
+/// duration / 10.
 RetardationKernel retardation_kernel(const RadiationData& radiation, double duration, double time_step,
                                      double taper = 0.5);
 

@@ -9,6 +9,13 @@
 
 namespace heavesim::hydro {
 
+void check_wave_period(const char* field, const char* what, double period) {
+  if (!(period >= shortest_wave_period && period <= longest_wave_period))
+    throw ParameterError(field, fmt::format("{} = {:g} s", what, period),
+                         fmt::format("a wave period in [{:g}, {:g}] s (a sea state of linear gravity waves)",
+                                     shortest_wave_period, longest_wave_period));
+}
+
 double wave_number(double w, double h, double g) {
   if (!(g > 0.0))
     throw ParameterError("gravity", fmt::format("g = {:g} m/s^2", g),

@@ -5,17 +5,14 @@
 
 #include <fmt/format.h>
 
+#include "hydro/waves/dispersion.hpp"
 #include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
-namespace {
-
 void check_sea_state(double hs, double tp) {
   if (!(hs > 0.0)) throw ParameterError("significant_height", fmt::format("Hs = {:g} m", hs), "Hs > 0 m");
-  if (!(tp > 0.0)) throw ParameterError("peak_period", fmt::format("Tp = {:g} s", tp), "Tp > 0 s");
+  check_wave_period("peak_period", "Tp", tp);
 }
-
-}  // namespace
 
 double PiersonMoskowitz::operator()(double w) const {
   if (w <= 0.0) return 0.0;

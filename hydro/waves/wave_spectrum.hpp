@@ -4,6 +4,10 @@
 // H_m0 = 4 sqrt(m0).
 namespace heavesim::hydro {
 
+/// Throws ParameterError("significant_height") unless Hs > 0, ParameterError("peak_period")
+/// unless Tp is a wave period (check_wave_period, dispersion.hpp).
+void check_sea_state(double significant_height, double peak_period);
+
 /// Pierson-Moskowitz in the form of Hs and Tp:
 ///   S(w) = (5/16) Hs^2 wp^4 w^-5 exp(-5/4 (wp/w)^4),  wp = 2 pi / Tp,
 /// whose integral over 0..inf is exactly Hs^2/16 (the often printed 1.057 f_p is

@@ -29,14 +29,23 @@ double WaveTrain::variance() const {
 WaveTrain regular_wave(double height, double period, double heading, double phase, double depth, Ramp ramp,
                        double gravity) {
   if (!(height >= 0.0)) throw ParameterError("height", fmt::format("H = {:g} m", height), "a wave height >= 0 m");
-  if (!(period > 0.0)) throw ParameterError("period", fmt::format("T = {:g} s", period), "a wave period > 0 s");
+  check_wave_period("period", "T", period);
   const double w = 2.0 * M_PI / period;
   return WaveTrain({{0.5 * height, w, wave_number(w, depth, gravity), heading, phase}}, ramp, depth);
 }
 
 WaveTrain irregular_sea(const std::function<double(double)>& spectrum, const IrregularSeaSettings& s) {
-  if (!(s.min_frequency > 0.0))
-    throw ParameterError("min_frequency", fmt::format("{:g} rad/s", s.min_frequency), "min_frequency > 0 rad/s");
+  // The band within the frequencies of wave periods (dispersion.hpp); its resolution
+  // (200 N points) then stays meaningful.
+  const double lowest = 2.0 * M_PI / longest_wave_period, highest = 2.0 * M_PI / shortest_wave_period;
+  if (!(s.min_frequency >= lowest && s.min_frequency <= highest))
+    throw ParameterError("min_frequency", fmt::format("{:g} rad/s", s.min_frequency),
+                         fmt::format("min_frequency in [{:.3g}, {:.3g}] rad/s (wave periods {:g} .. {:g} s)", lowest,
+                                     highest, shortest_wave_period, longest_wave_period));
+  if (!(s.max_frequency <= highest))
+    throw ParameterError("max_frequency", fmt::format("{:g} rad/s", s.max_frequency),
+                         fmt::format("max_frequency <= {:.3g} rad/s (a wave period of {:g} s)", highest,
+                                     shortest_wave_period));
   if (!(s.max_frequency > s.min_frequency))
     throw ParameterError("max_frequency",
                          fmt::format("{:g} rad/s, not above min_frequency = {:g} rad/s", s.max_frequency,
