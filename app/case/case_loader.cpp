@@ -502,10 +502,10 @@ void check_run_count(const NodeReader& key, const CaseDefinition& definition, do
   const double resolution = 1e3 * std::numeric_limits<double>::epsilon() * clock;
   const std::string found = fmt::format("{:g} s, {:.3g} {} over the {:g} s run", spacing, count, what, duration);
   if (!(count <= RunLimits::largest_count) || spacing < resolution)
-    key.fail(found, fmt::format("at most {:g} {} {:g} s or more apart (no run can do more: at t = {:g} s the clock "
-                                "resolves {:.3g} s)",
-                                RunLimits::largest_count, what, std::max(resolution, duration / RunLimits::largest_count),
-                                clock, resolution));
+    key.fail(found, fmt::format("a spacing of {:.3g} s or more (no run can do more: at most {:g} {}, and at t = {:g} s "
+                                "the clock resolves {:.3g} s)",
+                                std::max(resolution, duration / RunLimits::largest_count), RunLimits::largest_count,
+                                what, clock, resolution));
   if (count > limit && !definition.limits.allow_large_runs)
     key.fail(found, fmt::format("at most {:g} {} (a spacing of {:.3g} s or more), or --allow-large-runs for a run "
                                 "meant to be this large",
