@@ -314,8 +314,7 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       def.body_b = item["body_b"].text();
       if (auto point = item.optional("point_a")) def.point_a = point->vector3_in(length_range);
       if (auto point = item.optional("point_b")) def.point_b = point->vector3_in(length_range);
-      def.distance = item["distance"].positive_number();
-      item["distance"].number_in(length_range);
+      def.distance = item["distance"].positive_number(length_range);
       definition.distance_constraints.push_back(std::move(def));
     } else {
       item.expect_section("coupler");

@@ -120,14 +120,14 @@ double NodeReader::number_or(const std::string& key, double default_value) const
   return child ? child->number() : default_value;
 }
 
-double NodeReader::positive_number() const {
-  const double value = number();
+double NodeReader::positive_number(const QuantityRange& range) const {
+  const double value = number_in(range);
   if (!(value > 0.0)) fail(fmt::format("{} (= {:g})", node_->describe(), value), "a positive number");
   return value;
 }
 
-double NodeReader::non_negative_number() const {
-  const double value = number();
+double NodeReader::non_negative_number(const QuantityRange& range) const {
+  const double value = number_in(range);
   if (value < 0.0) fail(fmt::format("{} (= {:g})", node_->describe(), value), "a number >= 0");
   return value;
 }

@@ -45,8 +45,9 @@ class NodeReader {
   /// A number within `range` (a length, a mass, ...), which replaces any_number.
   double number_in(const QuantityRange& range) const;
   double number_or(const std::string& key, double default_value) const;
-  double positive_number() const;
-  double non_negative_number() const;
+  /// A number > 0 (>= 0) within `range`.
+  double positive_number(const QuantityRange& range = any_number) const;
+  double non_negative_number(const QuantityRange& range = any_number) const;
   long integer() const;
   std::string text() const;
   bool boolean() const;

@@ -30,7 +30,7 @@ SpringDamperDefinition SpringDamperDefinition::read(const NodeReader& item, cons
   if (auto point = item.optional("point_b")) def.point_b = point->vector3_in(length_range);
   def.spring.stiffness = item.optional("stiffness") ? item["stiffness"].non_negative_number() : 0.0;
   def.spring.damping = item.optional("damping") ? item["damping"].non_negative_number() : 0.0;
-  def.spring.rest_length = item["rest_length"].non_negative_number();
+  def.spring.rest_length = item["rest_length"].non_negative_number(length_range);
   if (auto point = item.optional("point_a")) def.point_a = point->vector3_in(length_range);
   return def;
 }
