@@ -5,6 +5,7 @@
 #include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <cstring>
@@ -267,9 +268,37 @@ class TreeBuilder : public YAML::EventHandler {
   std::vector<std::string> anchor_names_;
 };
 
+/// Rejects a flow collection longer than max_flow_collection_bytes before yaml-cpp sees
+/// it. Every bracket counts, also in quotes and comments: a check that never lets a long
+/// collection through, at the price of refusing a file over 1 MiB with a stray '[' in a
+/// text (the closing clamps at zero, so stray ']' cannot hide later openings).
+void check_flow_collections(const std::string& text, const std::string& origin) {
+  std::size_t depth = 0, opened_at = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    const bool end = i == text.size();
+    if (!end && (text[i] == '[' || text[i] == '{')) {
+      if (depth++ == 0) opened_at = i;
+    } else if (!end && (text[i] == ']' || text[i] == '}')) {
+      if (depth > 0) --depth;
+    }
+    if (depth > 0 && i - opened_at > max_flow_collection_bytes) {
+      const std::size_t line_start = text.rfind('\n', opened_at);
+      const int line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + opened_at, '\n'));
+      const int column = static_cast<int>(opened_at - (line_start == std::string::npos ? 0 : line_start + 1)) + 1;
+      throw InputError(SourceLocation{origin, line, column}, "",
+                       std::string("a '") + text[opened_at] + "' whose flow collection runs on for more than " +
+                           std::to_string(max_flow_collection_bytes) + " bytes",
+                       "flow collections ([...], {...}) of at most 1 MiB; longer lists in block style, one "
+                       "'- item' per line");
+    }
+    if (end) break;
+  }
+}
+
 }  // namespace
 
 CaseNode parse_yaml_text(const std::string& text, const std::string& origin, std::size_t value_limit) {
+  check_flow_collections(text, origin);
   std::istringstream stream(text);
   TreeBuilder builder(text, origin, value_limit);
   try {

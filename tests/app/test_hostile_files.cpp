@@ -115,6 +115,15 @@ TEST_F(HostileFiles, HundredThousandLevelsOfNestingStopAtTheLimit) {
   expect_bad_input(check(block), {block + ":101:", "at most 100 levels of nesting"});
 }
 
+TEST_F(HostileFiles, LongFlowCollectionIsRejectedBeforeTheParserBuffersIt) {
+  // yaml-cpp holds a flow collection's tokens until it closes: 16 MiB of "0," took 2.4 GB.
+  std::string text = std::string(one_body_rig) + "output:\n  channels: [";
+  while (text.size() < 3 * max_flow_collection_bytes) text += "bodies, ";
+  const std::string case_path = write("long.yaml", text);
+  expect_bad_input(check(case_path), {case_path + ":9:13: found a '[' whose flow collection runs on for more than "
+                                                   "1048576 bytes"});
+}
+
 TEST_F(HostileFiles, IncludeCycleIsReportedAtTheEntryThatClosesItWithTheChain) {
   const std::string first = write("first.yaml", "include: second.yaml\n");
   write("second.yaml", "solver: {t_end: 1}\ninclude: [third.yaml]\n");
