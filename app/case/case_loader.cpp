@@ -626,12 +626,11 @@ void read_parameters(const std::optional<NodeReader>& reader, ExpressionContext&
   if (!reader->node().is_map()) reader->fail("a map of name: value");
   for (const CaseNode::Entry& entry : reader->node().entries) {
     const NodeReader value = (*reader)[entry.key];
-    const bool identifier = !entry.key.empty() && (std::isalpha(entry.key[0]) || entry.key[0] == '_') &&
-                            std::all_of(entry.key.begin(), entry.key.end(),
-                                        [](char c) { return std::isalnum(c) || c == '_'; });
-    if (!identifier || entry.key == "pi" || entry.key == "t")
-      throw InputError(entry.key_location, value.path(), "parameter name '" + entry.key + "'",
-                       "a name of letters, digits and _ (not 'pi' or 't')");
+    // A parameter becomes a muParser variable: its name is checked against the parser's
+    // rules and reserved names here, at its key, before muParser sees it.
+    if (const std::string problem = parameter_name_problem(entry.key); !problem.empty())
+      throw InputError(entry.key_location, value.path(), "parameter name '" + entry.key + "', " + problem,
+                       parameter_name_expectation());
     expressions.define(entry.key, value.number());
   }
 }

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace mu {
 class Parser;
@@ -14,6 +15,14 @@ namespace heavesim {
 /// Adds what every case expression may use: deg(x), rad(x) and the constant pi.
 void define_case_functions(mu::Parser& parser);
 
+/// Why `name` cannot name a case parameter ("" when it can): it must be a variable name
+/// by muParser's rules (its name characters, not starting with a digit, its length
+/// limit) and not a name that expressions already give a meaning: muParser's built-in
+/// functions and constants (sin, ..., _pi, _e), ours (deg, rad, pi), and the time t.
+std::string parameter_name_problem(const std::string& name);
+/// What a parameter name must be, for messages (lists the reserved names).
+std::string parameter_name_expectation();
+
 class ExpressionContext {
  public:
   ExpressionContext();
@@ -21,7 +30,8 @@ class ExpressionContext {
   ExpressionContext(const ExpressionContext&) = delete;
   ExpressionContext& operator=(const ExpressionContext&) = delete;
 
-  /// Defines (or redefines) a named parameter usable in later expressions.
+  /// Defines (or redefines) a named parameter usable in later expressions; throws
+  /// std::invalid_argument for a name parameter_name_problem rejects.
   void define(const std::string& name, double value);
   bool defines(const std::string& name) const { return parameters_.count(name) > 0; }
 

@@ -17,9 +17,9 @@ TimeFunction::TimeFunction(std::string name, const std::string& position, const 
   auto make = [this](const std::string& text) {
     auto parser = std::make_unique<mu::Parser>();
     define_case_functions(*parser);
-    parser->DefineVar("t", &time_);
-    for (auto& [name, value] : parameters_) parser->DefineVar(name, &value);
-    try {
+    try {  // a mu::ParserError is no std::exception: past here it would end the program
+      parser->DefineVar("t", &time_);
+      for (auto& [name, value] : parameters_) parser->DefineVar(name, &value);
       parser->SetExpr(text);
       parser->Eval();  // parses now, so that a bad expression is bad input, not a failure mid-run
     } catch (const mu::Parser::exception_type& e) {
