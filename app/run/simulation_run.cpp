@@ -10,12 +10,21 @@ RunOutcome run_simulation(Scene& scene, const SolverSettings& solver, double out
   RunOutcome outcome;
   integrator.initialize(solver.t_start, scene.initial_state);
   outcome.time_reached = solver.t_start;
-  bool go_on = observe(solver.t_start, integrator.state());
+  // An output evaluates the state the integrator returned: a failure there is the
+  // integrator's to explain (an explicit step beyond its stability limit).
+  const auto observe_state = [&](double t) {
+    try {
+      return observe(t, integrator.state());
+    } catch (const NumericalError& error) {
+      throw integrator.explain(error);
+    }
+  };
+  bool go_on = observe_state(solver.t_start);
   for (long k = 1; k <= intervals && go_on; ++k) {
     const double t = k == intervals ? solver.t_end : solver.t_start + k * output_interval;
     integrator.advance_to(t);
     outcome.time_reached = t;
-    go_on = observe(t, integrator.state());
+    go_on = observe_state(t);
   }
   outcome.completed = outcome.time_reached >= solver.t_end;
   outcome.statistics = integrator.statistics();

@@ -51,8 +51,9 @@ PneumaticState PneumaticCompensator::evaluate(double t, const Model& model, cons
     throw NumericalError(t,
                          "pneumatic compensator '" + name_ + "': the gas volume is gone (V = " +
                              std::to_string(s.gas_volume) + " m^3 at stroke " + std::to_string(motion.stroke) + " m)",
-                         "the stroke ran far past the end stops: check the end-stop stiffness, the load and the "
-                         "gas pressure");
+                         "the stroke ran far past the end stops: a load or a prescribed motion (a driver on the "
+                         "stroke's joint) they cannot hold, or end stops too soft; check the end-stop stiffness, "
+                         "the load, the gas pressure and any driver");
   const double n = effective_exponent(p, motion.rate);
   if (z.size() > 0) {
     // Ideal gas of fixed mass: p V / T constant; theta = T / T0 is the state.

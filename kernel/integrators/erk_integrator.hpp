@@ -4,6 +4,7 @@
 #include <arkode/arkode_butcher_erk.h>
 #include <nvector/nvector_serial.h>
 
+#include "kernel/integrators/explicit_stability.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/integrators/sundials_support.hpp"
 
@@ -18,8 +19,7 @@ namespace heavesim {
 /// Andrews' mechanism: both levelled off at 8-9 significant digits while interpolating).
 class ErkIntegrator : public Integrator {
  public:
-  ErkIntegrator(OdeSystem& system, const IntegratorSettings& settings, ARKODE_ERKTableID table)
-      : settings_(settings), table_(table), system_(system) {}
+  ErkIntegrator(OdeSystem& system, const IntegratorSettings& settings, ARKODE_ERKTableID table);
   ~ErkIntegrator() override;
   void initialize(double t0, const VectorX& y0) override;
   void advance_to(double t_out) override;
@@ -31,9 +31,12 @@ class ErkIntegrator : public Integrator {
   static int rhs(double t, N_Vector y, N_Vector ydot, void* user_data);
   static int project_step(double t, N_Vector y, void* user_data);
   void release();
+  /// Throws the NumericalError of a failed ERKStepEvolve towards t_out.
+  [[noreturn]] void fail(int flag, double t_out, double t_reached);
 
   IntegratorSettings settings_;
   ARKODE_ERKTableID table_;
+  ButcherTableau tableau_;  // table_'s coefficients, for the stability limit of a failure
   OdeSystem& system_;
   sundials::Context context_;
   sundials::CallbackError callback_error_;

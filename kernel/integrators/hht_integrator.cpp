@@ -160,7 +160,7 @@ bool HhtIntegrator::try_step(double h) {
                                  residual_.tail(nz_), phi_);
     } catch (const NumericalError& error) {
       // A diverging iterate (not necessarily the model): a smaller step may pass.
-      last_failure_ = error.what();
+      last_failure_ = error;
       matrix_step_ = 0.0;
       ++statistics_.convergence_failures;
       return false;
@@ -224,7 +224,7 @@ bool HhtIntegrator::try_step(double h) {
   }
   // Remember where it failed, for the diagnosis; the next try starts with a new matrix.
   worst_residual_ = residual_.cwiseAbs().maxCoeff(&worst_row_);
-  last_failure_.clear();
+  last_failure_.reset();
   matrix_step_ = 0.0;
   ++statistics_.convergence_failures;
   return false;
@@ -278,10 +278,8 @@ void HhtIntegrator::project(VectorX& x, const VectorX& target) {
 void HhtIntegrator::fail(double h) {
   char what[320];
   const std::string where = system_.describe_component(worst_row_);
-  if (!last_failure_.empty())
-    std::snprintf(what, sizeof what,
-                  "HHT step-size collapse: Newton's iteration diverged even with a step of %.3g s (%s)", h,
-                  last_failure_.c_str());
+  if (last_failure_)
+    std::snprintf(what, sizeof what, "HHT step-size collapse: Newton's iteration diverged even with a step of %.3g s", h);
   else if (worst_row_ < nv_)
     std::snprintf(what, sizeof what,
                   "HHT step-size collapse: Newton's iteration did not converge even with a step of %.3g s "
@@ -292,11 +290,18 @@ void HhtIntegrator::fail(double h) {
                   "HHT step-size collapse: Newton's iteration did not converge even with a step of %.3g s "
                   "(largest residual %.3g, in the rate of the %s)",
                   h, worst_residual_, where.c_str());
-  const std::string state_note = system_.state_note(t_, y_);
-  if (!state_note.empty())
-    throw NumericalError(t_, std::string(what) + "; " + state_note,
-                         "the loops lose rank here: a smaller solver.step resolves the pass better; check that "
-                         "the mechanism can pass this configuration (a toggle or dead centre locks it)");
+  // The cause, most specific first: the loops at the last accepted state (a driver
+  // beyond their reach says so whatever the integrator), then the evaluation's own
+  // error with its own remedy (an element out of its range), then the generic advice.
+  const StateDiagnosis note = system_.state_note(t_, y_);
+  if (!note.empty())
+    throw NumericalError(t_, std::string(what) + "; " + note.what,
+                         !note.suggestion.empty()
+                             ? note.suggestion
+                             : "the loops lose rank here: a smaller solver.step resolves the pass better; check that "
+                               "the mechanism can pass this configuration (a toggle or dead centre locks it)");
+  if (last_failure_)
+    throw NumericalError(t_, std::string(what) + ": " + last_failure_->what(), last_failure_->suggestion());
   throw NumericalError(t_, what,
                        "look for a discontinuous or unstable force element, or a configuration the constraints "
                        "cannot reach; a smaller solver.step, or hht_alpha < 0 to damp stiff modes");

@@ -1,4 +1,5 @@
 #pragma once
+#include <optional>
 // Hilber-Hughes-Taylor (HHT-alpha) integration of the index-3 equations of motion with
 // an augmented Lagrangian and projections -- the structural-dynamics scheme that
 // commercial multibody codes use for closed loops (ADAMS' HHT, Chrono's HHT; the
@@ -90,7 +91,7 @@ class HhtIntegrator : public Integrator {
   VectorX projection_residual_, projection_multipliers_, projection_target_, speeds_, gamma_target_;
   // Diagnosis of the last failed step
   double worst_residual_ = 0.0;
-  std::string last_failure_;                   // a non-finite residual's diagnosis
+  std::optional<NumericalError> last_failure_;  // an evaluation's own error (non-finite, out of range)
   int worst_row_ = 0;
 };
 

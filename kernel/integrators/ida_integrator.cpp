@@ -176,14 +176,38 @@ void IdaIntegrator::advance_to(double t_out) {
       what += sundials::largest_local_error(dae_, errors, weights, id_nv_);  // differential components
     N_VDestroy(errors);
     N_VDestroy(weights);
+    // The last state IDA reached, examined as the explicit path examines its own: the
+    // loops (a driver beyond their reach, a singular configuration), then the fastest
+    // mode, which IDA must resolve when it is an excited, barely damped oscillation.
     N_Vector current = nullptr;
-    const std::string state_note = IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current
-                                       ? dae_.state_note(t_reached, sundials::map(current))
-                                       : std::string();
-    if (!state_note.empty()) {
-      throw NumericalError(t_reached, what + "; " + state_note,
-                           "the index-2 form cannot resolve the multipliers where the loops lose rank: "
-                           "solver.integrator: hht carries a mechanism through singular configurations");
+    const bool have_state = IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current;
+    const VectorX last_state = have_state ? VectorX(sundials::map(current)) : VectorX();
+    const StateDiagnosis note = have_state ? dae_.state_note(t_reached, last_state) : StateDiagnosis{};
+    if (!note.empty()) {
+      throw NumericalError(t_reached, what + "; " + note.what,
+                           !note.suggestion.empty()
+                               ? note.suggestion
+                               : "the index-2 form cannot resolve the multipliers where the loops lose rank: "
+                                 "solver.integrator: hht carries a mechanism through singular configurations");
+    }
+    const FastestMode mode = have_state ? dae_.fastest_mode_note(t_reached, last_state) : FastestMode{};
+    // About ten steps per period resolve an oscillation at IDA's usual tolerances; the
+    // mode is the cause when it alone needs a tenth of the allowed steps.
+    const double interval = t_out - t_, omega = std::abs(mode.eigenvalue.imag());
+    const double steps_needed = 10.0 * interval * omega / (2.0 * 3.141592653589793);
+    if (flag == IDA_TOO_MUCH_WORK && mode.found() && omega >= std::abs(mode.eigenvalue.real()) &&
+        steps_needed >= 0.1 * static_cast<double>(settings_.max_steps_per_output)) {
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    ": a barely damped oscillation that IDA resolves, about %.3g of its periods in the output "
+                    "interval of %.3g s (solver.max_steps = %ld)",
+                    interval * omega / (2.0 * 3.141592653589793), interval, settings_.max_steps_per_output);
+      std::string suggestion = "solver.integrator: hht steps over a fast oscillation it need not resolve (A-stable, "
+                               "fixed step)";
+      if (!mode.element.empty()) suggestion += "; or damp or soften " + mode.element;
+      char steps[64];
+      std::snprintf(steps, sizeof steps, "; or solver.max_steps above %.3g", steps_needed);
+      throw NumericalError(t_reached, what + "; " + mode.description() + text, suggestion + steps);
     }
     std::string suggestion;
     switch (flag) {

@@ -27,6 +27,7 @@ class OwningIntegrator final : public Integrator {
   const VectorX& state() const override { return integrator_->state(); }
   double time() const override { return integrator_->time(); }
   IntegratorStatistics statistics() const override { return integrator_->statistics(); }
+  NumericalError explain(const NumericalError& error) const override { return integrator_->explain(error); }
 
  private:
   std::unique_ptr<Form> form_;  // declared first: destroyed after the integrator that uses it

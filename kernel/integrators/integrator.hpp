@@ -58,6 +58,10 @@ class Integrator {
   virtual const VectorX& state() const = 0;
   virtual double time() const = 0;
   virtual IntegratorStatistics statistics() const = 0;
+  /// A failure met outside advance_to -- an output's evaluation of the state it
+  /// returned -- explained with what the integrator knows (an explicit step beyond its
+  /// stability limit leaves a finite but meaningless state); unchanged by default.
+  virtual NumericalError explain(const NumericalError& error) const { return error; }
 };
 
 class MultibodySystem;

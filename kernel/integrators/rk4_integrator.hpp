@@ -14,6 +14,9 @@ class Rk4Integrator : public Integrator {
   const VectorX& state() const override { return y_; }
   double time() const override { return t_; }
   IntegratorStatistics statistics() const override { return statistics_; }
+  /// The failure explained by the step's stability limit when the step is beyond it at
+  /// the start of the run or at the last output; unchanged otherwise.
+  NumericalError explain(const NumericalError& error) const override;
 
  private:
   void take_step(double h);
@@ -22,6 +25,8 @@ class Rk4Integrator : public Integrator {
   OdeSystem& system_;
   double t_ = 0.0;
   VectorX y_, k1_, k2_, k3_, k4_, stage_;
+  double t_start_ = 0.0, t_output_ = 0.0;  // s: the run's start and the last output
+  VectorX y_start_, y_output_;             // the states there, sane points to linearize at
   IntegratorStatistics statistics_;
 };
 

@@ -46,7 +46,8 @@ class OdeResidual : public DaeSystem {
   }
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y; }
   std::string describe_component(int index) const override { return system_.describe_component(index); }
-  std::string diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  StateDiagnosis diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  FastestMode fastest_mode(double t, const VectorX& y) override { return system_.fastest_mode(t, y); }
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override {
     system_.derivative(t, y, f_);
     r = yp - f_;

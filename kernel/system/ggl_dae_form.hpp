@@ -5,6 +5,7 @@
 
 #include "kernel/system/dae_system.hpp"
 #include "kernel/system/dynamics_differentiator.hpp"
+#include "kernel/system/fastest_mode.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
@@ -21,8 +22,11 @@ class GglDaeForm final : public DaeSystem {
   bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
   std::string describe_component(int index) const override;
   void algebraic_constraint_scales(VectorX& scale) const override;
-  std::string diagnose_state(double t, const VectorX& y) override {
+  StateDiagnosis diagnose_state(double t, const VectorX& y) override {
     return system_.diagnose_state(t, y.head(system_.size()));
+  }
+  FastestMode fastest_mode(double t, const VectorX& y) override {
+    return find_fastest_mode(system_, t, y.head(system_.size()));
   }
 
  private:

@@ -4,6 +4,7 @@
 // integrator. Redundant rows need no special care there (the augmented Lagrangian
 // never inverts J M^-1 J^T), so unlike the GGL form nothing is dropped.
 #include "kernel/system/dynamics_differentiator.hpp"
+#include "kernel/system/fastest_mode.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "kernel/system/second_order_system.hpp"
 
@@ -29,7 +30,8 @@ class Index3Form final : public SecondOrderSystem {
   std::string describe_component(int index) const override {
     return system_.describe_state_component(system_.model().nq + index);  // v, then z: contiguous in y
   }
-  std::string diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  StateDiagnosis diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  FastestMode fastest_mode(double t, const VectorX& y) override { return find_fastest_mode(system_, t, y); }
 
  private:
   MultibodySystem& system_;

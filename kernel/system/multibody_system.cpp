@@ -1,7 +1,9 @@
 #include "kernel/system/multibody_system.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <variant>
 
 #include <Eigen/SVD>
 
@@ -99,17 +101,23 @@ void MultibodySystem::check_constraint_solution(double t) {
   int worst = 0;
   const double error = mismatch.cwiseAbs().maxCoeff(&worst) / scale;
   if (error <= settings_.kkt_consistency_tolerance) return;
-  const ConstraintRank rank = analyse_constraint_rank(*model_, data_);  // the error path may allocate
-  throw NumericalError(t,
-                       "the constraint equations have no solution (singular configuration): the acceleration of " +
-                           describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
-                           std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
-                           std::to_string(model_->num_constraint_rows) + ")",
-                       "the mechanism has reached a locked or singular position: check the loop geometry, "
-                       "the initial state and the applied loads. A mechanism that passes through such a position "
-                       "(a four-bar lying flat) is carried through by the index-3 integrator (solver.integrator: "
-                       "hht); one that cannot move on (a loop stretched to its reach, a dead centre) stops here "
-                       "with any integrator");
+  // The error path may allocate. The rows becoming dependent say why: a driver among
+  // them prescribes what the loop cannot follow, and then no integrator can go on.
+  const ConstraintRank rank = analyse_constraint_rank(*model_, data_);
+  const StateDiagnosis loss = constraint_loss(1.0);
+  std::string what = "the constraint equations have no solution (singular configuration): the acceleration of " +
+                     describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
+                     std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
+                     std::to_string(model_->num_constraint_rows) + ")";
+  if (!loss.empty()) what += "; " + loss.what;
+  throw NumericalError(t, what,
+                       !loss.suggestion.empty()
+                           ? loss.suggestion
+                           : "the mechanism has reached a locked or singular position: check the loop geometry, "
+                             "the initial state and the applied loads. A mechanism that passes through such a "
+                             "position (a four-bar lying flat) is carried through by the index-3 integrator "
+                             "(solver.integrator: hht); one that cannot move on (a loop stretched to its reach, a "
+                             "dead centre) stops here with any integrator");
 }
 
 void MultibodySystem::spread_multipliers_over_every_row() {
@@ -181,28 +189,58 @@ std::string MultibodySystem::describe_state_component(int index) const {
   return "state component " + std::to_string(index);
 }
 
-std::string MultibodySystem::diagnose_state(double /*t*/, const VectorX& y) {
+StateDiagnosis MultibodySystem::diagnose_state(double /*t*/, const VectorX& y) {
   const Model& model = *model_;
   for (int k = 0; k < y.size(); ++k)
-    if (!std::isfinite(y[k])) return "the " + describe_state_component(k) + " is not finite";
-  if (!model.has_constraints()) return "";
+    if (!std::isfinite(y[k])) return {"the " + describe_state_component(k) + " is not finite", ""};
+  if (!model.has_constraints()) return {};
   compute_kinematics(y);
+  // Away from a singular configuration the ratio is of order one (Bricard's mechanism:
+  // ~0.3; the A02 four-bars: 1e-2 at 0.01 rad from lying flat).
+  return constraint_loss(1e-4);
+}
+
+StateDiagnosis MultibodySystem::constraint_loss(double max_ratio) {
+  const Model& model = *model_;
+  if (!model.has_constraints()) return {};
   constraint_jacobian(model, data_, data_.constraint_jacobian);
   const Eigen::JacobiSVD<MatrixX> svd(data_.constraint_jacobian, Eigen::ComputeThinU);
   const VectorX& sigma = svd.singularValues();
   int rank = constraint_rank_;
   if (rank < 0) rank = static_cast<int>((sigma.array() > constraint_rank_threshold * sigma[0]).count());
-  if (rank <= 0 || rank > sigma.size() || sigma[0] <= 0.0) return "";
+  if (rank <= 0 || rank > sigma.size() || !(sigma[0] > 0.0)) return {};
   const double ratio = sigma[rank - 1] / sigma[0];
-  // Away from a singular configuration the ratio is of order one (Bricard's mechanism:
-  // ~0.3; the A02 four-bars: 1e-2 at 0.01 rad from lying flat).
-  if (ratio > 1e-4) return "";
-  int row = 0;
-  svd.matrixU().col(rank - 1).cwiseAbs().maxCoeff(&row);
-  char text[160];
+  // The rows along the direction being lost (a left singular vector): every row that
+  // carries at least a fifth of its largest entry, by constraint.
+  const VectorX lost = svd.matrixU().col(rank - 1).cwiseAbs();
+  std::string rows, drivers;
+  std::vector<const Constraint*> named;
+  for (int row = 0; row < lost.size(); ++row) {
+    if (lost[row] < 0.2 * lost.maxCoeff()) continue;
+    const Constraint* constraint = constraint_of_row(model, row);
+    rows += (rows.empty() ? "" : ", ") + describe_constraint_row(model, row);
+    if (!constraint || std::find(named.begin(), named.end(), constraint) != named.end()) continue;
+    named.push_back(constraint);
+    if (const auto* driver = std::get_if<DriverConstraint>(&constraint->kind))
+      drivers += (drivers.empty() ? "driver '" : ", driver '") + constraint->name + "' (joint '" +
+                 model.joints[driver->joint].name + "')";
+  }
+  const bool driven = !drivers.empty();
+  if (!(max_ratio >= 1.0 || ratio < max_ratio || (driven && ratio < 100.0 * max_ratio))) return {};
+  std::string loop;  // the other constraints that close the loop the drivers pull on
+  for (const Constraint* constraint : named)
+    if (!std::holds_alternative<DriverConstraint>(constraint->kind))
+      loop += (loop.empty() ? "" : ", ") + std::string(constraint->kind_name()) + " '" + constraint->name + "'";
+  char text[32];
   std::snprintf(text, sizeof text, "%.2g", ratio);
-  return "the loops are at a singular configuration: the constraint Jacobian's rank-" + std::to_string(rank) +
-         " singular value is " + text + " of its largest, lost along " + describe_constraint_row(model, row);
+  const std::string rank_text = "the constraint Jacobian's rank-" + std::to_string(rank) + " singular value is " +
+                                text + " of its largest, lost along " + rows;
+  if (!driven) return {"the loops are at a singular configuration: " + rank_text, ""};
+  const std::string pulled = loop.empty() ? "the other constraints" : "the loop closed by " + loop;
+  return {drivers + " pulls " + pulled + " where it cannot close (" + rank_text + ")",
+          "the driver prescribes a motion the loop cannot follow (beyond its reach, or into a dead centre): change " +
+              drivers + ": its position expression or its range, or the loop's geometry (lengths, attachment "
+              "points); neither a smaller step nor another integrator carries a driven loop past this point"};
 }
 
 void MultibodySystem::report_non_finite(double t, const VectorX& per_coordinate, const std::string& what) const {

@@ -16,6 +16,7 @@
 #include "kernel/algorithms/constrained_dynamics.hpp"
 #include "kernel/elements/force_element.hpp"
 #include "kernel/math/numerical_error.hpp"
+#include "kernel/system/failure_diagnosis.hpp"
 
 namespace heavesim {
 
@@ -73,11 +74,18 @@ class MultibodySystem {
   // --- diagnosis of a failed step (error path: may allocate) ---
   /// Names component `index` of y = [q; v; z]: "speed of joint 'pivot0' (body 'crank0')".
   std::string describe_state_component(int index) const;
-  /// What stands out at (t, y): a non-finite component, or loops within reach of a
-  /// singular configuration (the constraint Jacobian's rank-th singular value below
-  /// 1e-4 of its largest, naming the row it is lost along); "" otherwise. Recomputes
-  /// the position stage at y.
-  std::string diagnose_state(double t, const VectorX& y);
+  /// What stands out at (t, y): a non-finite component, or loops at (or, with a driver
+  /// in the direction being lost, near) a singular configuration (constraint_loss);
+  /// empty otherwise. Recomputes the position stage at y.
+  StateDiagnosis diagnose_state(double t, const VectorX& y);
+  /// The constraint rows that are becoming dependent at the current position stage: the
+  /// rank-th singular value of J relative to its largest, the rows along the direction
+  /// being lost, and whether a driver is among them (a driver that pulls a loop beyond
+  /// its reach or into a dead centre: no integrator can go on). Reported when that ratio
+  /// is below `max_ratio`, or below 100 max_ratio with a driver among the rows (a driven
+  /// loop fails before it reaches the singular point: its speeds grow as 1/sqrt of the
+  /// distance); max_ratio >= 1 always reports.
+  StateDiagnosis constraint_loss(double max_ratio);
   /// The rank of the constraint Jacobian on the manifold, as a form found it when it
   /// started (the reference for diagnose_state); -1 until then.
   void remember_constraint_rank(int rank) { constraint_rank_ = rank; }

@@ -31,12 +31,21 @@ void OdeForm::project(double t, VectorX& y) {
       data.constraint_residual.cwiseAbs().maxCoeff(&worst);
       char residual[32];
       std::snprintf(residual, sizeof residual, "%.3g", result.position_residual);
-      throw NumericalError(t,
-                           std::string("constraint projection did not converge: |Phi| = ") + residual + " after " +
-                               std::to_string(result.iterations) + " iterations, worst at " +
-                               describe_constraint_row(model, worst),
-                           "the step was too large for the loop to be restored: reduce solver.step or the "
-                           "tolerances, or check for a singular configuration");
+      std::string what = std::string("constraint projection did not converge: |Phi| = ") + residual + " after " +
+                         std::to_string(result.iterations) + " iterations, worst at " +
+                         describe_constraint_row(model, worst);
+      // Where the projection stopped: rows becoming dependent there (a driver pulling
+      // the loop beyond its reach) are the cause, not the step. The projection has
+      // already failed, so a weaker loss (1e-2; with a driver, any) is the explanation.
+      const StateDiagnosis loss = system_.constraint_loss(1e-2);
+      if (!loss.empty()) what += "; " + loss.what;
+      throw NumericalError(t, what,
+                           !loss.suggestion.empty() ? loss.suggestion
+                           : !loss.empty()
+                               ? "the loops are at a singular configuration: solver.integrator: hht carries a "
+                                 "mechanism through one; one that cannot move on (a dead centre) stops here"
+                               : "the step was too large for the loop to be restored: reduce solver.step or the "
+                                 "tolerances, or check for a singular configuration");
     }
     y.segment(model.nq, model.nv) = v_;
     choose_constraint_rows();

@@ -14,6 +14,7 @@
 // independent coordinates (Wehage & Haug 1982).
 #include <Eigen/QR>
 
+#include "kernel/system/fastest_mode.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "kernel/system/ode_system.hpp"
 
@@ -27,7 +28,8 @@ class OdeForm final : public OdeSystem {
   void derivative(double t, const VectorX& y, VectorX& ydot) override { system_.state_derivative(t, y, ydot); }
   void project(double t, VectorX& y) override;
   std::string describe_component(int index) const override { return system_.describe_state_component(index); }
-  std::string diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  StateDiagnosis diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
+  FastestMode fastest_mode(double t, const VectorX& y) override { return find_fastest_mode(system_, t, y); }
 
  private:
   /// Marks the rows the next steps' KKT solves use (Data::constraint_row_used).
