@@ -1,48 +1,128 @@
 #include "app/output/result_file.hpp"
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <stdexcept>
+
+#include "io/hdf5/hdf5_error.hpp"
 
 namespace heavesim {
 namespace {
 
 using hdf5::Handle;
 
-void replace_attribute(hid_t object, const std::string& name) {
-  if (H5Aexists(object, name.c_str()) > 0) H5Adelete(object, name.c_str());
-}
+constexpr const char* samples_written_name = "samples_written";
+// Room held in /summary's object header for the attributes written when the run ends
+// (their names depend on the case): released just before the first of them is created,
+// so that they fill space the header already has instead of a new continuation block
+// (an allocation, which a SIGKILL inside HDF5's flush can leave pointing past the end
+// of file; see the header). A v1 attribute message of a number takes ~80 bytes.
+constexpr const char* reserved_room_name = "_reserved_room";
+constexpr hsize_t summary_room_bytes = 32768;
 
 }  // namespace
 
-ResultFile::ResultFile(const std::string& path) : path_(path) {
-  H5Eset_auto(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by return codes below
-  file_ = Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-  if (!file_.valid()) throw std::runtime_error("cannot create result file '" + path + "'");
+ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
+    : path_(path), partial_path_(path + ".partial"), reserved_samples_(reserved_samples) {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by return codes below
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw OutputError(path_, "cannot create result file", "the path is a directory");
+  // Today's result replaces any earlier one at once, as opening with truncation did: a
+  // stale complete = 1 file must not stand for a run that then fails in its set-up.
+  if (std::filesystem::exists(path, error) && !std::filesystem::remove(path, error))
+    throw OutputError(path_, "cannot replace result file", error.message());
+  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
+  set_attribute("/", samples_written_name, 0L);
+  const std::vector<unsigned char> room(summary_room_bytes, 0);
+  const Handle room_space(H5Screate_simple(1, &summary_room_bytes, nullptr));
+  write_attribute("/summary", reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
 }
 
 ResultFile::~ResultFile() {
-  flush();
-  // The series' datasets close before the file (members are destroyed in reverse
-  // order of declaration, and series_ is declared after file_).
+  if (published_ && !closed_ && failure_.empty()) {
+    try {
+      close();
+    } catch (...) {
+      // close() has recorded the failure and abandoned the file; a destructor reports nothing.
+    }
+  }
+  if (!closed_) abandon();
+  if (!published_) {
+    std::error_code ignored;
+    std::filesystem::remove(partial_path_, ignored);
+  }
+}
+
+void ResultFile::fail(const std::string& action) {
+  failure_cause_ = hdf5::last_error();
+  failure_ = OutputError(path_, action, failure_cause_).what();
+  throw OutputError(path_, action, failure_cause_);
+}
+
+void ResultFile::check_usable() const {
+  if (!failure_.empty()) throw OutputError(path_, "result file not written after an earlier failure", failure_cause_);
+  if (closed_) throw std::logic_error("ResultFile: write after close: " + path_);
+}
+
+void ResultFile::abandon() {
+  // Nothing more reaches the disk: the file stays as the last complete flush left it.
+  for (Series& series : series_) series.dataset.abandon();
+  file_.abandon();
 }
 
 Handle ResultFile::open_object(const std::string& object_path) {
-  if (object_path == "/" || object_path.empty()) return Handle(H5Oopen(file_.get(), "/", H5P_DEFAULT));
-  if (H5Lexists(file_.get(), object_path.c_str(), H5P_DEFAULT) <= 0) {
-    const Handle links = hdf5::intermediate_group_links();
-    return Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+  if (object_path == "/" || object_path.empty()) {
+    Handle root(H5Oopen(file_.get(), "/", H5P_DEFAULT));
+    check(root.valid(), "cannot write result file");
+    return root;
   }
-  return Handle(H5Oopen(file_.get(), object_path.c_str(), H5P_DEFAULT));
+  const htri_t exists = H5Lexists(file_.get(), object_path.c_str(), H5P_DEFAULT);
+  Handle object;
+  if (exists <= 0) {
+    const Handle links = hdf5::intermediate_group_links();
+    object = Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+  } else {
+    object = Handle(H5Oopen(file_.get(), object_path.c_str(), H5P_DEFAULT));
+  }
+  check(object.valid(), "cannot write result file");
+  return object;
+}
+
+void ResultFile::write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
+                                 const void* data) {
+  check_usable();
+  const Handle object = open_object(object_path);
+  Handle attribute;
+  if (H5Aexists(object.get(), name.c_str()) > 0) {
+    attribute = Handle(H5Aopen(object.get(), name.c_str(), H5P_DEFAULT));
+    check(attribute.valid(), "cannot write result file");
+    const Handle stored_type(H5Aget_type(attribute.get()));
+    const Handle stored_space(H5Aget_space(attribute.get()));
+    if (H5Tequal(stored_type.get(), type) <= 0 || H5Sextent_equal(stored_space.get(), space) <= 0) {
+      attribute.reset();
+      check(H5Adelete(object.get(), name.c_str()) >= 0, "cannot write result file");
+    }
+  }
+  if (!attribute.valid()) {
+    if (name != reserved_room_name && H5Aexists(object.get(), reserved_room_name) > 0)
+      check(H5Adelete(object.get(), reserved_room_name) >= 0, "cannot write result file");
+    attribute = Handle(H5Acreate2(object.get(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT));
+  }
+  check(attribute.valid(), "cannot write result file");
+  check(H5Awrite(attribute.get(), type, data) >= 0, "cannot write result file");
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
-  const Handle object = open_object(object_path);
-  replace_attribute(object.get(), name);
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
-  const Handle attribute(H5Acreate2(object.get(), name.c_str(), type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT));
   const char* text = value.c_str();
-  H5Awrite(attribute.get(), type.get(), &text);
+  write_attribute(object_path, name, type.get(), space.get(), &text);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, double value) {
@@ -50,57 +130,63 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, long value) {
-  const Handle object = open_object(object_path);
-  replace_attribute(object.get(), name);
   const Handle space(H5Screate(H5S_SCALAR));
-  const Handle attribute(
-      H5Acreate2(object.get(), name.c_str(), H5T_NATIVE_LONG, space.get(), H5P_DEFAULT, H5P_DEFAULT));
-  H5Awrite(attribute.get(), H5T_NATIVE_LONG, &value);
+  write_attribute(object_path, name, H5T_NATIVE_LONG, space.get(), &value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name,
                                const std::vector<double>& values) {
-  const Handle object = open_object(object_path);
-  replace_attribute(object.get(), name);
   const hsize_t size = values.size();
   const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
-  const Handle attribute(
-      H5Acreate2(object.get(), name.c_str(), H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, H5P_DEFAULT));
-  H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, values.data());
+  write_attribute(object_path, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
+  check_usable();
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
   const Handle links = hdf5::intermediate_group_links();
   const Handle dataset(
       H5Dcreate2(file_.get(), dataset_path.c_str(), type.get(), space.get(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
-  if (!dataset.valid()) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
+  check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
   const char* data = text.c_str();
-  H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data);
+  check(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data) >= 0, "cannot write result file");
   set_attribute(dataset_path, "description", description);
   set_attribute(dataset_path, "units", std::string("-"));
 }
 
 int ResultFile::add_series(const std::string& dataset_path, int columns, const std::string& units,
                            const std::string& description) {
+  check_usable();
   const int rank = columns == 0 ? 1 : 2;
-  const hsize_t initial[2] = {0, static_cast<hsize_t>(columns)};
+  const hsize_t initial[2] = {reserved_samples_, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
   const hsize_t chunk[2] = {chunk_rows, static_cast<hsize_t>(std::max(columns, 1))};
   const Handle space(H5Screate_simple(rank, initial, maximum));
   const Handle create(H5Pcreate(H5P_DATASET_CREATE));
-  H5Pset_chunk(create.get(), rank, chunk);
+  // Chunks allocated now and never filled: see the header (no structural change later).
+  const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
+                          H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
+                          H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0;
+  // No chunk cache: a write goes to disk in H5Dwrite, where its failure is seen, and a
+  // dataset never holds data that closing it would have to write.
+  const Handle access(H5Pcreate(H5P_DATASET_ACCESS));
+  check(configured && H5Pset_chunk_cache(access.get(), H5D_CHUNK_CACHE_NSLOTS_DEFAULT, 0, 1.0) >= 0, "cannot create result file");
   const Handle links = hdf5::intermediate_group_links();
   Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links.get(),
-                            create.get(), H5P_DEFAULT));
-  if (!dataset.valid()) throw std::runtime_error("cannot create dataset " + dataset_path + " in " + path_);
+                            create.get(), access.get()));
+  check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
   Series series;
   series.dataset = std::move(dataset);
   series.columns = columns;
+  series.extent = reserved_samples_;
   series_.push_back(std::move(series));
   set_attribute(dataset_path, "units", units);
   set_attribute(dataset_path, "description", description);
+  // The per-column statistics written at the end exist from the start ("not computed
+  // yet", NaN, until then): writing them then overwrites in place, allocating nothing.
+  const std::vector<double> not_computed(std::max(columns, 1), std::nan(""));
+  for (const char* statistic : series_statistics) set_attribute(dataset_path, statistic, not_computed);
   return static_cast<int>(series_.size()) - 1;
 }
 
@@ -114,27 +200,83 @@ void ResultFile::end_sample() {
   if (++buffered_samples_ >= chunk_rows) flush();
 }
 
-void ResultFile::flush() {
-  if (!file_.valid()) return;
-  buffered_samples_ = 0;
-  for (Series& series : series_) {
-    const int width = std::max(series.columns, 1);
-    const hsize_t rows = series.buffer.size() / width;
-    if (rows == 0) continue;
-    const int rank = series.columns == 0 ? 1 : 2;
-    const hsize_t new_size[2] = {series.rows_written + rows, static_cast<hsize_t>(series.columns)};
-    H5Dset_extent(series.dataset.get(), new_size);
-    const Handle file_space(H5Dget_space(series.dataset.get()));
-    const hsize_t start[2] = {series.rows_written, 0};
-    const hsize_t count[2] = {rows, static_cast<hsize_t>(series.columns)};
-    H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr);
-    const Handle memory_space(H5Screate_simple(rank, count, nullptr));
-    H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
-             series.buffer.data());
-    series.rows_written += rows;
-    series.buffer.clear();
+bool ResultFile::write_rows(Series& series, hsize_t rows) {
+  const int width = std::max(series.columns, 1);
+  if (series.buffer.size() < rows * width)
+    throw std::logic_error("ResultFile: a series has fewer rows than the samples ended: " + path_);
+  const int rank = series.columns == 0 ? 1 : 2;
+  const hsize_t first = samples_written_;
+  bool extended = false;
+  if (first + rows > series.extent) {
+    const hsize_t new_size[2] = {first + rows, static_cast<hsize_t>(series.columns)};
+    check(H5Dset_extent(series.dataset.get(), new_size) >= 0, "cannot write result file");
+    series.extent = first + rows;
+    extended = true;
   }
-  H5Fflush(file_.get(), H5F_SCOPE_GLOBAL);
+  const Handle file_space(H5Dget_space(series.dataset.get()));
+  const hsize_t start[2] = {first, 0};
+  const hsize_t count[2] = {rows, static_cast<hsize_t>(series.columns)};
+  const Handle memory_space(H5Screate_simple(rank, count, nullptr));
+  check(file_space.valid() && memory_space.valid() &&
+            H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) >= 0,
+        "cannot write result file");
+  check(H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
+                 series.buffer.data()) >= 0,
+        "cannot write result file");
+  // Rows of a sample still being appended stay for the next flush.
+  series.buffer.erase(series.buffer.begin(), series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * width));
+  return extended;
+}
+
+void ResultFile::flush_file() { check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "cannot write result file"); }
+
+void ResultFile::flush() {
+  check_usable();
+  const hsize_t rows = buffered_samples_;
+  if (rows > 0) {
+    bool extended = false;
+    for (Series& series : series_) extended = write_rows(series, rows) || extended;
+    // Grown datasets: their new extents reach the disk before the count that trusts them.
+    if (extended) flush_file();
+    buffered_samples_ = 0;
+    const long written = static_cast<long>(samples_written_ + rows);
+    set_attribute("/", samples_written_name, written);
+    samples_written_ += rows;
+  }
+  flush_file();
+  if (!published_) publish();
+}
+
+void ResultFile::publish() {
+  if (std::rename(partial_path_.c_str(), path_.c_str()) != 0) {
+    const std::string cause = std::strerror(errno);
+    failure_cause_ = cause;
+    failure_ = OutputError(path_, "cannot create result file", cause).what();
+    throw OutputError(path_, "cannot create result file", cause);
+  }
+  published_ = true;
+}
+
+void ResultFile::close() {
+  if (closed_) return;
+  try {
+    flush();
+    // An early stop: series end where the samples do (an orderly stop leaves no unwritten rows).
+    for (Series& series : series_) {
+      if (series.extent == samples_written_) continue;
+      const hsize_t size[2] = {samples_written_, static_cast<hsize_t>(series.columns)};
+      check(H5Dset_extent(series.dataset.get(), size) >= 0, "cannot write result file");
+      series.extent = samples_written_;
+    }
+    flush_file();
+    for (Series& series : series_) check(series.dataset.close(), "cannot close result file");
+    check(file_.close(), "cannot close result file");
+  } catch (...) {
+    abandon();
+    closed_ = true;
+    throw;
+  }
+  closed_ = true;
 }
 
 }  // namespace heavesim

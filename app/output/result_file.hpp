@@ -1,23 +1,64 @@
 #pragma once
-// The HDF5 result file (contract in docs/result-file.md): time series that grow in
-// chunks as the run goes and are flushed to disk, so that a run stopped early still
-// leaves a readable file with complete = 0.
+// The HDF5 result file (contract in docs/result-file.md): time series written in whole
+// samples as the run goes, so that a run stopped in any way (a signal, a numerical
+// failure, a full disk, even SIGKILL) leaves a readable file with complete = 0 whose
+// root attribute `samples_written` counts the samples every series holds.
+//
+// Why the file survives SIGKILL at any point (the design; tested by killing a writer
+// at every one of its writes, tests/app/test_interrupted_runs.cpp):
+//  * HDF5 writes its metadata (object headers, chunk indexes) in an order of its own
+//    and the superblock, which records the end of the allocated space, last of all
+//    (HDF5 User's Guide, "The HDF5 metadata cache": entries are flushed ring by ring,
+//    superblock ring last). A process killed inside that flush leaves headers that
+//    disagree with each other (one series extended, the next not) or that point past
+//    the recorded end of file ("addr overflow" on read). Appending by extending every
+//    dataset as it goes (the former design) therefore broke at ~20 % of the write
+//    points of a flush.
+//  * So nothing structural changes while the run writes samples: every series is
+//    created at its final length (`reserved_samples`, known from t_end and the output
+//    interval) with its chunks allocated at creation (H5D_ALLOC_TIME_EARLY) but not
+//    filled (H5D_FILL_TIME_NEVER: no write, the file is sparse). A flush then only
+//    overwrites raw data in place and afterwards the fixed-size `samples_written`
+//    attribute in place: no allocation, no index change, no header moves.
+//  * The layout itself (every dataset, attribute and the first flush) is written to
+//    "<path>.partial", renamed to <path> once it is on disk: the name never points at a
+//    half-built file.
+//  * A series longer than its reservation (a caller that did not know the count) is
+//    extended, the data flushed, and only then is `samples_written` raised, in a flush
+//    of its own: readers trust the count, not the extent.
+//  * SWMR (H5F_ACC_SWMR_WRITE) orders HDF5's flushes, but needs the 1.10 file format,
+//    whose superblock marks the file "open for writing"; after SIGKILL every
+//    non-SWMR reader (h5py.File(path) included) then refuses it until `h5clear -s`.
+//    The 1.8-compatible format kept here opens anywhere after any stop.
+// An orderly end (close) shrinks every series to `samples_written`; after SIGKILL the
+// series keep their reserved length and the rows past `samples_written` are unwritten.
+//
+// Every HDF5 call is checked: a failure throws OutputError naming the file and the
+// system's cause, and the file is then left as the last complete flush wrote it.
 #include <string>
 #include <vector>
 
+#include "app/output/output_error.hpp"
 #include "io/hdf5/hdf5_handle.hpp"
 
 namespace heavesim {
 
 class ResultFile {
  public:
-  /// Creates (truncates) the file; throws std::runtime_error if it cannot.
-  explicit ResultFile(const std::string& path);
+  /// Creates "<path>.partial" (replacing any file at `path`); throws OutputError if it
+  /// cannot. Series get `reserved_samples` rows at creation (0: grown as written).
+  explicit ResultFile(const std::string& path, hsize_t reserved_samples = 0);
+  /// Never throws: closes a published file (reporting nothing), abandons a failed one,
+  /// removes one that was never published. Call close() to hear about failures.
   ~ResultFile();
   ResultFile(const ResultFile&) = delete;
   ResultFile& operator=(const ResultFile&) = delete;
 
   const std::string& path() const { return path_; }
+  /// Whole samples on disk (the root attribute `samples_written`).
+  hsize_t samples_written() const { return samples_written_; }
+  /// Whether the file exists under its name (its first flush succeeded).
+  bool published() const { return published_; }
 
   void set_attribute(const std::string& object_path, const std::string& name, const std::string& value);
   void set_attribute(const std::string& object_path, const std::string& name, double value);
@@ -27,33 +68,59 @@ class ResultFile {
   /// A fixed string dataset (e.g. /case/yaml).
   void write_text(const std::string& dataset_path, const std::string& text, const std::string& description);
 
-  /// A growing series: shape (N) when columns == 0, else (N, columns).
+  /// Per-column statistics attributes every series carries (NaN until written).
+  static constexpr const char* series_statistics[] = {"minimum", "maximum", "mean", "standard_deviation"};
+
+  /// A series: shape (N) when columns == 0, else (N, columns).
   /// Returns its id for append(); `units` and `description` become attributes.
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
   /// Appends one row (max(columns, 1) values) to the series' in-memory buffer.
   void append(int series, const double* row);
   /// Ends one sample (a row appended to every series). The buffers go to disk only here,
-  /// once a chunk of samples has accumulated: the file then holds whole samples, every
-  /// series the same length, wherever the process is stopped (even by SIGKILL).
+  /// once a chunk of samples has accumulated.
   void end_sample();
-  /// Writes buffered rows of every series and flushes the file to disk.
+  /// Writes the whole samples buffered, then `samples_written`, and flushes the file to
+  /// disk; the first flush publishes the file under its name.
   void flush();
+  /// Flushes, shrinks every series to `samples_written`, closes everything and checks
+  /// that it closed (a failure at close is a failed write).
+  void close();
 
  private:
   struct Series {
     hdf5::Handle dataset;
     int columns = 0;
-    hsize_t rows_written = 0;
+    hsize_t extent = 0;  // rows the dataset has (reserved or grown)
     std::vector<double> buffer;
   };
   /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
   hdf5::Handle open_object(const std::string& object_path);
+  /// Writes attribute `name` of `object_path`, overwriting it in place when it exists with
+  /// the same type and shape (no allocation), else creating it.
+  void write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
+                       const void* data);
+  /// Rows [first, first + rows) of a series from its buffer; extends the dataset if needed.
+  bool write_rows(Series& series, hsize_t rows);
+  void flush_file();
+  void publish();
+  /// Records the failure (the file is not written again) and throws it.
+  [[noreturn]] void fail(const std::string& action);
+  void check(bool succeeded, const std::string& action) {
+    if (!succeeded) fail(action);
+  }
+  void check_usable() const;
+  void abandon();
 
-  std::string path_;
+  std::string path_, partial_path_;
+  hsize_t reserved_samples_ = 0;
   hdf5::Handle file_;
   std::vector<Series> series_;
   hsize_t buffered_samples_ = 0;  // samples appended since the last flush
+  hsize_t samples_written_ = 0;
+  bool published_ = false, closed_ = false;
+  std::string failure_;  // the OutputError's message once a write has failed
+  std::string failure_cause_;
   static constexpr hsize_t chunk_rows = 1024;
 };
 

@@ -44,7 +44,6 @@ void write_result_metadata(ResultFile& file, const CaseDefinition& definition) {
   file.set_attribute("/", "frames", std::string("world: Z up, origin on the mean free surface; "
                                                 "spatial vectors [angular; linear]; quaternions w, x, y, z"));
   file.write_text("/case/yaml", definition.resolved_yaml, "the resolved case (after include and --set)");
-  file.flush();
 }
 
 void write_constraint_summary(ResultFile& file, const Scene& scene) {
@@ -63,7 +62,6 @@ void write_constraint_summary(ResultFile& file, const Scene& scene) {
   file.set_attribute("/constraints", "assembly_largest_position_change", assembly.largest_position_change);
   file.set_attribute("/constraints", "assembly_largest_speed_change", assembly.largest_speed_change);
   file.set_attribute("/constraints", "assembly_position_residual", assembly.position_residual);
-  file.flush();
 }
 
 void write_run_statistics(ResultFile& file, const IntegratorStatistics& statistics, double wall_seconds,

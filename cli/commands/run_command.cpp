@@ -13,9 +13,11 @@
 #include "app/case/case_definition.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/result_metadata.hpp"
+#include "app/output/output_error.hpp"
 #include "app/output/recorder.hpp"
 #include "app/run/simulation_run.hpp"
 #include "app/scene/scene.hpp"
+#include "io/hdf5/hdf5_handle.hpp"
 #include "kernel/integrators/integrator.hpp"
 
 namespace heavesim {
@@ -55,76 +57,152 @@ class ProgressLine {
   bool shown_ = false;
 };
 
+/// SIGINT and SIGTERM ask the run to stop (it then closes its file, complete = 0) from
+/// the first instruction of `run` on: a signal while the case loads or the scene is built
+/// stops before the run, with nothing written. SIGXFSZ is ignored so that a file growing
+/// past the file-size limit (ulimit -f) fails its write with EFBIG, reported like a full
+/// disk, instead of killing the process. The previous dispositions come back at the end.
+class StopSignals {
+ public:
+  StopSignals() {
+    stop_signal = 0;
+    previous_int_ = std::signal(SIGINT, request_stop);
+    previous_term_ = std::signal(SIGTERM, request_stop);
+    previous_file_size_ = std::signal(SIGXFSZ, SIG_IGN);
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, previous_int_);
+    std::signal(SIGTERM, previous_term_);
+    std::signal(SIGXFSZ, previous_file_size_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+  static int received() { return stop_signal; }
+
+ private:
+  void (*previous_int_)(int) = SIG_DFL;
+  void (*previous_term_)(int) = SIG_DFL;
+  void (*previous_file_size_)(int) = SIG_DFL;
+};
+
+int stopped_before_the_run(const std::string& case_name) {
+  fmt::print(stderr, "heavesim: stopped by signal {} before the run of case '{}' started; no result file written\n",
+             StopSignals::received(), case_name);
+  return 1;
+}
+
+/// The directory of `path`, created if missing; an OutputError (exit 1) if it cannot be.
+void create_parent_directory(const std::string& path, const char* what) {
+  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
+  if (directory.empty()) return;
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error) throw OutputError(directory.string(), std::string("cannot create the directory for the ") + what, error.message());
+}
+
+/// A run that stopped before t_end (signal, numerical failure, a CSV that could not be
+/// written): statistics and run summary written, complete = 0, file closed.
+void close_incomplete(ResultFile& file, Recorder& recorder, const IntegratorStatistics& statistics, double wall,
+                      double simulated) {
+  recorder.finish();
+  write_run_statistics(file, statistics, wall, simulated);
+  file.close();
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options) {
+  // Before anything touches HDF5 (a BEM file read while loading does).
+  hdf5::skip_library_exit_cleanup();
+  const StopSignals signals;
   const CaseDefinition definition = load_case(options.case_path, options.overrides, options.allow_large_runs);
-  Scene scene = build_scene(definition);
-  if (!options.quiet) print_loop_summary(scene);
+  if (StopSignals::received()) return stopped_before_the_run(definition.name);
 
   const std::string output_path =
       options.output_path.empty() ? "results/" + definition.name + ".h5" : options.output_path;
-  const std::filesystem::path output_directory = std::filesystem::path(output_path).parent_path();
-  if (!output_directory.empty()) std::filesystem::create_directories(output_directory);
-  ResultFile file(output_path);
+  // The output place is checked (created) before the scene is built: a result that
+  // cannot be written is known before any work is done.
+  create_parent_directory(output_path, "result file");
+  // The scene is built (and the run-size limits checked, app/scene/run_size.hpp) before
+  // the file reserves room for every sample.
+  Scene scene = build_scene(definition);
+  if (!options.quiet) print_loop_summary(scene);
+  const SolverSettings& solver = definition.solver;
+  ResultFile file(output_path, static_cast<hsize_t>(output_sample_count(solver, definition.output.interval)));
   write_result_metadata(file, definition);
   write_constraint_summary(file, scene);
 
   std::optional<CsvWriter> csv;
+  std::string csv_path;
   if (!options.csv_directory.empty()) {
-    std::filesystem::create_directories(options.csv_directory);
-    csv.emplace((std::filesystem::path(options.csv_directory) / (definition.name + ".csv")).string());
+    csv_path = (std::filesystem::path(options.csv_directory) / (definition.name + ".csv")).string();
+    create_parent_directory(csv_path, "CSV file");
+    csv.emplace(csv_path);
   }
   Recorder recorder(definition, scene, &file, csv ? &*csv : nullptr);
-
-  const SolverSettings& solver = definition.solver;
   std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator, *scene.system);
+  if (StopSignals::received()) return stopped_before_the_run(definition.name);
   ProgressLine progress(solver.t_start, solver.t_end, !options.quiet);
 
-  stop_signal = 0;
-  auto previous_int = std::signal(SIGINT, request_stop);
-  auto previous_term = std::signal(SIGTERM, request_stop);
-  auto restore_signals = [&]() {
-    std::signal(SIGINT, previous_int);
-    std::signal(SIGTERM, previous_term);
-  };
-
+  double last_sample_time = solver.t_start;
   RunOutcome outcome;
   try {
-    outcome = run_simulation(scene, solver, definition.output.interval, *integrator,
-                             [&](double t, const VectorX& y) {
-                               recorder.record(t, y);
-                               progress.update(t);
-                               return stop_signal == 0;
-                             });
-  } catch (const NumericalError& error) {
+    file.flush();  // the layout is on disk: the file appears under its name
+    try {
+      outcome = run_simulation(scene, solver, definition.output.interval, *integrator,
+                               [&](double t, const VectorX& y) {
+                                 recorder.record(t, y);
+                                 last_sample_time = t;
+                                 progress.update(t);
+                                 return StopSignals::received() == 0;
+                               });
+    } catch (const NumericalError& error) {
+      progress.clear();
+      if (csv) csv->close();
+      file.set_attribute("/", "failure_time", error.time());
+      file.set_attribute("/", "failure", std::string(error.what()));
+      file.set_attribute("/", "failure_suggestion", error.suggestion());
+      close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(),
+                       integrator->time() - solver.t_start);
+      fmt::print(stderr,
+                 "heavesim: numerical failure in case '{}' at t = {:.6g} s: {}\n  suggestion: {}\n"
+                 "  results up to t = {:.6g} s are in {} (complete = 0)\n",
+                 definition.name, error.time(), error.what(), error.suggestion(), integrator->time(), output_path);
+      return 3;
+    }
     progress.clear();
-    restore_signals();
+    // The CSV closes first: if its last write fails, the result file is still open to be
+    // closed as a stopped run's (below).
+    if (csv) csv->close();
+    if (!outcome.completed) {
+      close_incomplete(file, recorder, outcome.statistics, progress.elapsed(), outcome.time_reached - solver.t_start);
+      fmt::print(stderr, "heavesim: stopped by signal {} at t = {:.6g} s; partial results in {} (complete = 0)\n",
+                 StopSignals::received(), outcome.time_reached, output_path);
+      return 1;
+    }
     recorder.finish();
-    write_run_statistics(file, integrator->statistics(), progress.elapsed(), integrator->time() - solver.t_start);
-    file.set_attribute("/", "failure_time", error.time());
-    file.set_attribute("/", "failure", std::string(error.what()));
-    file.set_attribute("/", "failure_suggestion", error.suggestion());
-    fmt::print(stderr,
-               "heavesim: numerical failure in case '{}' at t = {:.6g} s: {}\n  suggestion: {}\n"
-               "  results up to t = {:.6g} s are in {} (complete = 0)\n",
-               definition.name, error.time(), error.what(), error.suggestion(), integrator->time(), output_path);
-    return 3;
-  }
-  progress.clear();
-  restore_signals();
-  recorder.finish();
-  const IntegratorStatistics& statistics = outcome.statistics;
-  const double wall = progress.elapsed();
-  write_run_statistics(file, statistics, wall, outcome.time_reached - solver.t_start);
-  if (!outcome.completed) {
-    fmt::print(stderr, "heavesim: stopped by signal {} at t = {:.6g} s; partial results in {} (complete = 0)\n",
-               static_cast<int>(stop_signal), outcome.time_reached, output_path);
+    write_run_statistics(file, outcome.statistics, progress.elapsed(), outcome.time_reached - solver.t_start);
+    file.set_attribute("/", "complete", 1L);  // last: everything else is on disk already
+    file.close();
+  } catch (const OutputError& error) {
+    progress.clear();
+    fmt::print(stderr, "heavesim: {}\n", error.what());
+    if (error.path() != output_path) {
+      // The CSV failed; the result file is still whole: close it as a stopped run's.
+      close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(), last_sample_time - solver.t_start);
+      fmt::print(stderr, "  the run stopped at t = {:.6g} s; results up to there are in {} (complete = 0)\n",
+                 last_sample_time, output_path);
+    } else if (file.published()) {
+      fmt::print(stderr, "  the run stopped at t = {:.6g} s; {} keeps the first {} samples (samples_written, complete = 0)\n",
+                 last_sample_time, output_path, file.samples_written());
+    } else {
+      fmt::print(stderr, "  no result file was written\n");
+    }
     return 1;
   }
-  file.set_attribute("/", "complete", 1L);
-  file.flush();
 
+  const IntegratorStatistics& statistics = outcome.statistics;
+  const double wall = progress.elapsed();
   if (!options.quiet) {
     fmt::print("{}: {:.6g} s simulated in {:.3f} s wall ({:.1f}x real time), {} steps, {} evaluations, "
                "{} samples -> {}\n",

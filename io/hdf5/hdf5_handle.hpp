@@ -34,10 +34,29 @@ class Handle {
     if (id_ >= 0) H5Idec_ref(id_);
     id_ = -1;
   }
+  /// Releases the identifier now and says whether HDF5 managed to (closing a file or a
+  /// dataset writes what it still holds, and that write can fail).
+  bool close() {
+    const bool closed = id_ < 0 || H5Idec_ref(id_) >= 0;
+    id_ = -1;
+    return closed;
+  }
+  /// Forgets the identifier without releasing it: for a file whose writes have failed,
+  /// where closing would retry them (and could half-write what the disk refused). The
+  /// process exits without HDF5's at-exit clean-up (skip_library_exit_cleanup).
+  void abandon() { id_ = -1; }
 
  private:
   hid_t id_ = -1;
 };
+
+/// Stops HDF5 from closing, at process exit, what the program left open. After a failed
+/// write the library's own clean-up (H5_term_library, registered with atexit) retries the
+/// flush of datasets it could not close and crashes on them (HDF5 1.10: a dataset whose
+/// close failed stays registered after its memory is freed; exit code 139 on a full
+/// disk). Writers close everything themselves, in order, and check each close. Effective
+/// only before the first other HDF5 call (HDF5 Reference Manual, H5dont_atexit).
+inline void skip_library_exit_cleanup() { H5dont_atexit(); }
 
 /// A variable-length UTF-8 string type, for text datasets and attributes.
 inline Handle variable_text_type() {
