@@ -191,8 +191,8 @@ hydro::ExcitationData read_capytaine_excitation(const std::string& path, const C
         // Capytaine's e^{-i w t} to WAMIT's e^{+i w t}: the complex conjugate. The sum of
         // the two forces, then its scaling, may each overflow.
         const std::string sum = "/diffraction_force + /Froude_Krylov_force";
-        X[influenced[a]] = {dimensional(file, sum, total.real(), factor, at + ", re"),
-                            dimensional(file, sum, -total.imag(), factor, at + ", im")};
+        X[influenced[a]] = {dimensional(file, sum, total.real(), factor, at + ", re of the sum"),
+                            dimensional(file, sum, -total.imag(), factor, at + ", im of the sum")};
       }
       data.force[h].push_back(X);
     }

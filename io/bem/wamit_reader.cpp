@@ -228,7 +228,6 @@ ExcitationData read_wamit_3(const std::string& path, const WamitScaling& s) {
     if (!(period > 0.0))
       throw DataError(path, row.line, fmt::format("PER = {:g}", period), "a period > 0 s in an excitation file");
     check_frequency_finite(path, row);
-    dimensional(path, row, 1, M_PI / 180.0);  // BETA [deg], converted to rad below
     const int i = mode_index(path, row, 2, "I");
     const double modulus = row.values[3], re = row.values[5], im = row.values[6];
     // WAMIT prints 7 significant digits; |X| and (Re, Im) must describe the same number.
