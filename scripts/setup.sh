@@ -8,6 +8,7 @@ packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libsundials-dev libsuitesparse-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
   python3-numpy python3-h5py python3-matplotlib
 )
 if [[ "${1:-}" == "--peers" ]]; then

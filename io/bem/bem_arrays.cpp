@@ -54,18 +54,28 @@ void check_finite(const hdf5::Reader& file, const std::string& dataset, double v
   if (!std::isfinite(value)) file.fail(dataset, fmt::format("{} = {}", what, value), "finite numbers");
 }
 
+double dimensional(const hdf5::Reader& file, const std::string& dataset, double stored, double factor,
+                   const std::string& what) {
+  check_finite(file, dataset, stored, what);
+  const double value = factor * stored;
+  if (!std::isfinite(value))
+    file.fail(dataset, fmt::format("{} = {:g}, which overflows to {} once scaled by {:g}", what, stored, value, factor),
+              "values whose dimensional (scaled) value is a finite number");
+  return value;
+}
+
 void symmetrise_checked(const hdf5::Reader& file, const std::string& dataset, hydro::Matrix6& M, const char* what,
                         const std::string& at) {
   for (int i = 0; i < 6; ++i)
     for (int j = i + 1; j < 6; ++j) {
-      const double scale = std::sqrt(std::abs(M(i, i) * M(j, j)));
+      const double scale = std::sqrt(std::abs(M(i, i))) * std::sqrt(std::abs(M(j, j)));  // no overflow
       if (std::abs(M(i, j) - M(j, i)) > bem::bem_symmetry_tolerance * scale + 1e-300)
         file.fail(dataset,
                   fmt::format("{}({},{}) = {:.6g} but {}({},{}) = {:.6g} {}", what, i + 1, j + 1, M(i, j), what, j + 1,
                               i + 1, M(j, i), at),
                   fmt::format("a symmetric matrix (within {} of sqrt({}_ii {}_jj))", bem::bem_symmetry_tolerance,
                               what, what));
-      M(i, j) = M(j, i) = 0.5 * (M(i, j) + M(j, i));
+      M(i, j) = M(j, i) = 0.5 * M(i, j) + 0.5 * M(j, i);  // halves: the sum may overflow
     }
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "io/bem/wamit_reader.hpp"  // bem_symmetry_tolerance, symmetric_part
 #include "io/hdf5/hdf5_reader.hpp"
 #include "hydro/bem/bem_data.hpp"
 
@@ -31,6 +32,12 @@ class AxisArray {
 
 /// Fails with the dataset named unless `value` is finite; `what` says which entry.
 void check_finite(const hdf5::Reader& file, const std::string& dataset, double value, const std::string& what);
+
+/// `factor * stored`: a stored value made dimensional for the case's fluid (or converted,
+/// deg to rad). Fails with the dataset named unless both are finite: a stored value near
+/// the largest double times rho g overflows to inf, which no later check would catch.
+double dimensional(const hdf5::Reader& file, const std::string& dataset, double stored, double factor,
+                   const std::string& what);
 
 /// Checks |M_ij - M_ji| <= tol sqrt(|M_ii M_jj|) (tol = bem::bem_symmetry_tolerance, as
 /// for WAMIT files) and symmetrises M; `at` says where (e.g. "at w = 0.5 rad/s").

@@ -75,8 +75,7 @@ class BemioFile {
     for (std::size_t i = 0; i < 6; ++i)
       for (std::size_t j = 0; j < 6; ++j) {
         const double value = k ? array.at({i, j, *k}) : array.at({i, j});
-        check_finite(file, dataset, value, fmt::format("entry ({},{}) {}", i + 1, j + 1, at));
-        M(i, j) = factor * value;
+        M(i, j) = dimensional(file, dataset, value, factor, fmt::format("entry ({},{}) {}", i + 1, j + 1, at));
       }
     return M;
   }
@@ -149,7 +148,7 @@ hydro::RadiationData read_bemio_radiation(const std::string& path, const CaseFlu
     const hydro::Matrix6 b = bemio.block(B, damping, k, factor, bemio.at_frequency(k));
     data.angular_frequencies.push_back(w);
     data.added_mass.push_back(added_mass);
-    data.damping.push_back(0.5 * (b + b.transpose()));
+    data.damping.push_back(symmetric_part(b));
   }
   if (data.angular_frequencies.empty())
     file.fail(parameters + "w", "no frequency w > 0", "the finite frequencies of the BEM run");
@@ -171,8 +170,7 @@ hydro::ExcitationData read_bemio_excitation(const std::string& path, const CaseF
   const AxisArray imaginary = bemio.oriented(im, {6, nh, nf}, fmt::format("(6, Nh = {}, Nf)", nh).c_str());
   hydro::ExcitationData data;
   for (std::size_t h = 0; h < nh; ++h) {
-    check_finite(file, directions, headings.values[h], fmt::format("heading {}", h + 1));
-    data.headings.push_back(headings.values[h] * M_PI / 180.0);
+    data.headings.push_back(dimensional(file, directions, headings.values[h], M_PI / 180.0, fmt::format("heading {}", h + 1)));
   }
   for (std::size_t k = 0; k < nf; ++k)
     if (bemio.frequencies[k] > 0.0) data.angular_frequencies.push_back(bemio.frequencies[k]);
@@ -183,11 +181,9 @@ hydro::ExcitationData read_bemio_excitation(const std::string& path, const CaseF
       hydro::ComplexVector6 X;
       for (std::size_t i = 0; i < 6; ++i) {
         const std::string at = fmt::format("entry ({},{},{}) {}", i + 1, h + 1, k + 1, bemio.at_frequency(k));
-        const double x = real.at({i, h, k}), y = imaginary.at({i, h, k});
-        check_finite(file, re, x, at);
-        check_finite(file, im, y, at);
         // BEMIO keeps WAMIT's e^{+i w t} phase (WEC-Sim's readWAMIT does not conjugate).
-        X[i] = bemio.excitation_factor * std::complex<double>(x, y);
+        X[i] = {dimensional(file, re, real.at({i, h, k}), bemio.excitation_factor, at),
+                dimensional(file, im, imaginary.at({i, h, k}), bemio.excitation_factor, at)};
       }
       data.force[h].push_back(X);
     }

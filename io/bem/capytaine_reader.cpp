@@ -92,11 +92,10 @@ class CapytaineFile {
     hydro::Matrix6 M = hydro::Matrix6::Zero();
     for (std::size_t a = 0; a < influenced.size(); ++a)
       for (std::size_t b = 0; b < radiating.size(); ++b) {
-        const double v = value(a, b);
-        check_finite(file, variable, v,
-                     fmt::format("the entry {}influenced_dof = {}, radiating_dof = {}", at, dof_names[influenced[a]],
-                                 dof_names[radiating[b]]));
-        M(influenced[a], radiating[b]) = factor * v;
+        M(influenced[a], radiating[b]) =
+            dimensional(file, variable, value(a, b), factor,
+                        fmt::format("the entry {}influenced_dof = {}, radiating_dof = {}", at,
+                                    dof_names[influenced[a]], dof_names[radiating[b]]));
       }
     return M;
   }
@@ -136,7 +135,7 @@ hydro::RadiationData read_capytaine_radiation(const std::string& path, const Cas
       const hydro::Matrix6 damping = matrix(B, "/radiation_damping", k);
       data.angular_frequencies.push_back(omega[k]);
       data.added_mass.push_back(added_mass);
-      data.damping.push_back(0.5 * (damping + damping.transpose()));
+      data.damping.push_back(symmetric_part(damping));
     }
   }
   if (!has_infinite)
@@ -179,18 +178,21 @@ hydro::ExcitationData read_capytaine_excitation(const std::string& path, const C
     for (std::size_t h = 0; h < headings.size(); ++h) {
       hydro::ComplexVector6 X = hydro::ComplexVector6::Zero();
       for (std::size_t a = 0; a < influenced.size(); ++a) {
+        const std::string at = fmt::format("the entry omega = {:g}, wave_direction = {:g}, influenced_dof = {}",
+                                           omega[k], headings[h], dof_names[influenced[a]]);
         std::complex<double> total;
         for (const auto& [variable, array] : {std::pair{"/diffraction_force", &diffraction},
                                               std::pair{"/Froude_Krylov_force", &froude_krylov}}) {
-          const std::string at = fmt::format("the entry omega = {:g}, wave_direction = {:g}, influenced_dof = {}",
-                                             omega[k], headings[h], dof_names[influenced[a]]);
           const double x = array->at({k, h, a, real}), y = array->at({k, h, a, imaginary});
           check_finite(file, variable, x, at + ", re");
           check_finite(file, variable, y, at + ", im");
           total += std::complex<double>(x, y);
         }
-        // Capytaine's e^{-i w t} to WAMIT's e^{+i w t}: the complex conjugate.
-        X[influenced[a]] = factor * std::conj(total);
+        // Capytaine's e^{-i w t} to WAMIT's e^{+i w t}: the complex conjugate. The sum of
+        // the two forces, then its scaling, may each overflow.
+        const std::string sum = "/diffraction_force + /Froude_Krylov_force";
+        X[influenced[a]] = {dimensional(file, sum, total.real(), factor, at + ", re of the sum"),
+                            dimensional(file, sum, -total.imag(), factor, at + ", im of the sum")};
       }
       data.force[h].push_back(X);
     }

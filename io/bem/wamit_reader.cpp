@@ -73,12 +73,32 @@ double length_power(double L, int base, int i, int j) { return std::pow(L, base 
 
 double period_to_frequency(double period) { return 2.0 * M_PI / period; }
 
+/// The frequency 2 pi / PER of a row with PER > 0; fails for a period so small that the
+/// frequency overflows.
+void check_frequency_finite(const std::string& path, const Row& row) {
+  if (!std::isfinite(period_to_frequency(row.values[0])))
+    throw DataError(path, row.line, fmt::format("PER = {:g}, whose frequency 2 pi / PER overflows", row.values[0]),
+                    "a period whose frequency is a finite number");
+}
+
+/// `factor * row.values[column]`: a nondimensional coefficient made dimensional (rho g
+/// L^k ...). Fails unless finite: a value near the largest double times rho g overflows.
+double dimensional(const std::string& path, const Row& row, size_t column, double factor) {
+  const double value = factor * row.values[column];
+  if (!std::isfinite(value))
+    throw DataError(path, row.line,
+                    fmt::format("{:g} in column {}, which overflows to {} once made dimensional (x {:g})",
+                                row.values[column], column + 1, value, factor),
+                    "a coefficient whose dimensional value is a finite number");
+  return value;
+}
+
 /// Checks |M_ij - M_ji| <= tol sqrt(|M_ii M_jj|) and symmetrises M.
 void check_symmetric(const std::string& path, Matrix6& M, const Eigen::Matrix<int, 6, 6>& lines, const char* what,
                      double period) {
   for (int i = 0; i < 6; ++i)
     for (int j = i + 1; j < 6; ++j) {
-      const double scale = std::sqrt(std::abs(M(i, i) * M(j, j)));
+      const double scale = std::sqrt(std::abs(M(i, i))) * std::sqrt(std::abs(M(j, j)));  // no overflow
       if (std::abs(M(i, j) - M(j, i)) > bem_symmetry_tolerance * scale + 1e-300) {
         const int line = std::max(lines(i, j), lines(j, i));
         throw DataError(path, line,
@@ -87,7 +107,7 @@ void check_symmetric(const std::string& path, Matrix6& M, const Eigen::Matrix<in
                         fmt::format("a symmetric matrix (within {} of sqrt({}_ii {}_jj))", bem_symmetry_tolerance, what,
                                     what));
       }
-      M(i, j) = M(j, i) = 0.5 * (M(i, j) + M(j, i));
+      M(i, j) = M(j, i) = 0.5 * M(i, j) + 0.5 * M(j, i);  // halves: the sum may overflow
     }
 }
 
@@ -112,10 +132,12 @@ RadiationData read_wamit_1(const std::string& path, const WamitScaling& s) {
     if (period < 0.0 && period != -1.0)
       throw DataError(path, row.line, fmt::format("PER = {:g}", period),
                       "a period > 0, or -1 (zero frequency) or 0 (infinite frequency)");
-    if (period <= 0.0)
+    if (period <= 0.0) {
       check_columns(path, row, 4, "PER I J A for the zero- and infinite-frequency rows");
-    else
+    } else {
       check_columns(path, row, 5, "PER I J A B");
+      check_frequency_finite(path, row);
+    }
     const int i = mode_index(path, row, 1, "I"), j = mode_index(path, row, 2, "J");
     auto [it, inserted] = block_of_period.try_emplace(period, blocks.size());
     if (inserted) blocks.push_back({period, row.line, {}});
@@ -161,8 +183,8 @@ RadiationData read_wamit_1(const std::string& path, const WamitScaling& s) {
     for (const auto& [pair, r] : b.entries) {
       const auto [i, j] = pair;
       const double k = length_power(L, 3, i, j);
-      A(i, j) = rho * k * rows[r].values[3];
-      if (b.period > 0.0) B(i, j) = rho * w * k * rows[r].values[4];
+      A(i, j) = dimensional(path, rows[r], 3, rho * k);
+      if (b.period > 0.0) B(i, j) = dimensional(path, rows[r], 4, rho * w * k);
       lines(i, j) = rows[r].line;
     }
     check_symmetric(path, A, lines, "A", b.period);
@@ -175,7 +197,7 @@ RadiationData read_wamit_1(const std::string& path, const WamitScaling& s) {
       // B is symmetric in theory too, but real files hold larger discretisation
       // asymmetry at short periods (MSS semisub: B15 and B51 differ by 6 % at 4.5 s), so
       // it is symmetrised without a check.
-      B = (0.5 * (B + B.transpose())).eval();
+      B = symmetric_part(B);
       data.angular_frequencies.push_back(w);
       data.added_mass.push_back(A);
       data.damping.push_back(B);
@@ -205,6 +227,7 @@ ExcitationData read_wamit_3(const std::string& path, const WamitScaling& s) {
     const double period = row.values[0], beta = row.values[1];
     if (!(period > 0.0))
       throw DataError(path, row.line, fmt::format("PER = {:g}", period), "a period > 0 s in an excitation file");
+    check_frequency_finite(path, row);
     const int i = mode_index(path, row, 2, "I");
     const double modulus = row.values[3], re = row.values[5], im = row.values[6];
     // WAMIT prints 7 significant digits; |X| and (Re, Im) must describe the same number.
@@ -250,7 +273,7 @@ ExcitationData read_wamit_3(const std::string& path, const WamitScaling& s) {
     for (const auto& [beta, modes] : it->second) {
       for (const auto& [i, r] : modes) {
         const double scale = rho_g * std::pow(L, i < 3 ? 2 : 3);
-        data.force[h][n][i] = scale * std::complex<double>(rows[r].values[5], rows[r].values[6]);
+        data.force[h][n][i] = {dimensional(path, rows[r], 5, scale), dimensional(path, rows[r], 6, scale)};
       }
       ++h;
     }
@@ -269,7 +292,7 @@ Matrix6 read_wamit_hst(const std::string& path, const WamitScaling& s) {
       throw DataError(path, row.line, fmt::format("a second row for I = {}, J = {}", i + 1, j + 1),
                       fmt::format("one row per (I, J); the first is on line {}", seen(i, j)));
     seen(i, j) = row.line;
-    C(i, j) = s.density * s.gravity * length_power(s.length_scale, 2, i, j) * row.values[2];
+    C(i, j) = dimensional(path, row, 2, s.density * s.gravity * length_power(s.length_scale, 2, i, j));
   }
   return C;
 }

@@ -31,4 +31,8 @@ hydro::BemData read_wamit(const std::string& basename, const WamitScaling& scali
 /// (BEM solutions are symmetric only to discretisation error; the MSS file has 5e-4).
 inline constexpr double bem_symmetry_tolerance = 0.02;
 
+/// (M + M^T) / 2, summed as halves: M_ij + M_ji overflows for entries near the largest
+/// double, their halves do not.
+inline hydro::Matrix6 symmetric_part(const hydro::Matrix6& M) { return 0.5 * M + 0.5 * M.transpose(); }
+
 }  // namespace heavesim::bem

@@ -19,9 +19,25 @@ std::vector<hsize_t> dataspace_shape(hid_t dataset) {
   return shape;
 }
 
-std::size_t element_count(const std::vector<hsize_t>& shape) {
-  return std::accumulate(shape.begin(), shape.end(), std::size_t{1},
-                         [](std::size_t n, hsize_t d) { return n * static_cast<std::size_t>(d); });
+/// The most bytes one dataset or attribute may need in memory: far more than any BEM
+/// file's largest array (6 x 6 Nb x Nf numbers, some 10^5), far less than what the
+/// dimensions or type size of a damaged header (up to 2^64) would allocate.
+constexpr std::size_t largest_object_bytes = std::size_t{1} << 27;  // 128 MiB
+
+/// The element count of `shape`, checked before anything is allocated for it: fails
+/// (naming `object`) when count x element_bytes exceeds largest_object_bytes.
+std::size_t checked_element_count(const Reader& reader, const std::string& object, const std::vector<hsize_t>& shape,
+                                  std::size_t element_bytes) {
+  const std::size_t limit = largest_object_bytes / std::max<std::size_t>(element_bytes, 1);
+  std::size_t count = 1;
+  for (hsize_t extent : shape) {
+    if (extent != 0 && count > limit / extent)
+      reader.fail(object, fmt::format("shape {} of {}-byte elements", shape_text(shape), element_bytes),
+                  fmt::format("at most {} MiB in one dataset (a damaged header gives such sizes)",
+                              largest_object_bytes >> 20));
+    count *= extent;
+  }
+  return count;
 }
 
 /// Strings of a dataset or attribute of string type `stored` (fixed or variable
@@ -52,6 +68,11 @@ std::vector<std::string> read_string_elements(hid_t stored, std::size_t count, R
     texts.emplace_back(begin, std::find(begin, begin + size, '\0'));
   }
   return texts;
+}
+
+/// Bytes per element of a string type in memory: the fixed length, or a pointer.
+std::size_t string_element_bytes(hid_t type) {
+  return H5Tis_variable_str(type) > 0 ? sizeof(char*) : H5Tget_size(type);
 }
 
 herr_t record_scale_name(hid_t /*dataset*/, unsigned /*axis*/, hid_t scale, void* name) {
@@ -116,9 +137,14 @@ Array Reader::read(const std::string& dataset) const {
   const H5T_class_t type_class = H5Tget_class(type.get());
   if (type_class != H5T_INTEGER && type_class != H5T_FLOAT)
     fail(dataset, "a dataset that does not hold numbers", "a numeric (integer or floating-point) dataset");
+  // A number is at most 16 bytes (long double); a larger size is a damaged type, which
+  // libhdf5 would convert through a buffer of that size per element.
+  const std::size_t type_size = H5Tget_size(type.get());
+  if (type_size == 0 || type_size > 16)
+    fail(dataset, fmt::format("a numeric type of {} bytes", type_size), "integers or floating-point numbers of 1 to 16 bytes");
   Array array;
   array.shape = dataspace_shape(id.get());
-  array.values.resize(element_count(array.shape));
+  array.values.resize(checked_element_count(*this, dataset, array.shape, std::max(type_size, sizeof(double))));
   if (H5Dread(id.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, array.values.data()) < 0)
     fail(dataset, "data that cannot be read (damaged file)", "a readable dataset");
   return array;
@@ -134,7 +160,8 @@ std::vector<std::string> Reader::read_strings(const std::string& dataset) const 
   const Handle id = open_dataset(dataset);
   const Handle type(H5Dget_type(id.get()));
   if (H5Tget_class(type.get()) != H5T_STRING) fail(dataset, "a dataset that does not hold text", "strings");
-  const std::size_t count = element_count(dataspace_shape(id.get()));
+  const std::size_t count =
+      checked_element_count(*this, dataset, dataspace_shape(id.get()), string_element_bytes(type.get()));
   return read_string_elements(type.get(), count, [&](hid_t memory, void* buffer) {
     return H5Dread(id.get(), memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);
   });
@@ -146,7 +173,9 @@ std::optional<std::string> Reader::text_attribute(const std::string& object, con
   const Handle type(H5Aget_type(attribute.get()));
   if (H5Tget_class(type.get()) != H5T_STRING) fail(object, "a '" + name + "' attribute that is not text", "text");
   const Handle space(H5Aget_space(attribute.get()));
-  const auto count = static_cast<std::size_t>(std::max<hssize_t>(H5Sget_simple_extent_npoints(space.get()), 0));
+  const auto points = static_cast<hsize_t>(std::max<hssize_t>(H5Sget_simple_extent_npoints(space.get()), 0));
+  const std::size_t count = checked_element_count(*this, object + " (attribute " + name + ")", {points},
+                                                  string_element_bytes(type.get()));
   const std::vector<std::string> texts = read_string_elements(
       type.get(), count, [&](hid_t memory, void* buffer) { return H5Aread(attribute.get(), memory, buffer); });
   return texts.empty() ? std::string() : texts.front();

@@ -3,15 +3,19 @@
 // layouts and conjugation), read back equal to the WAMIT reader's dimensional data;
 // the heave decay and regular-wave cases give the same history from either format;
 // every malformed file of tests/bad_bem/ (bemio_*, capytaine_*) is bad input (exit
-// code 2) naming the file, the dataset, what was found and what was expected.
+// code 2) naming the file, the dataset, what was found and what was expected; and the
+// fuzzer's HDF5 findings (fuzz/regressions/fuzz_bemio, fuzz_capytaine).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <complex>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 
 #include "io/bem/bem_file.hpp"
+#include "io/bem/bemio_reader.hpp"
+#include "io/bem/capytaine_reader.hpp"
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -230,6 +234,30 @@ TEST(BemFiles, EveryMalformedFixtureIsInTheTable) {
     EXPECT_TRUE(found) << name << " has no test";
   }
   EXPECT_EQ(listed, static_cast<int>(std::size(bad_files)));
+}
+
+// Stored values that are finite but not once made dimensional: BEMIO damping 1e306
+// times rho w, and a Capytaine excitation whose diffraction and Froude-Krylov parts
+// (1e308 each at omega = 0.785398, heading 0.523599, Heave) overflow when summed.
+// Both used to be returned as inf.
+TEST(BemFiles, CoefficientsThatOverflowOnceDimensionalAreBadData) {
+  const std::string bemio = testing::source_path("fuzz/regressions/fuzz_bemio/damping_overflows_once_dimensional.bemio");
+  const std::string capytaine = testing::source_path("fuzz/regressions/fuzz_capytaine/excitation_sum_overflows.nc");
+  auto expect_overflow = [](const std::string& file, const std::string& says, const std::function<void()>& read) {
+    try {
+      read();
+      ADD_FAILURE() << file << ": no error";
+    } catch (const hydro::DataError& error) {
+      EXPECT_EQ(error.file(), file) << error.what();
+      EXPECT_NE(std::string(error.what()).find(says), std::string::npos) << error.what();
+    }
+  };
+  expect_overflow(bemio + ":/body1/hydro_coeffs/radiation_damping/all",
+                  "entry (3,3) at w = 0.785398 rad/s (frequency 5 of 8) = 1e+306, which overflows to inf once scaled",
+                  [&] { bem::read_bemio_radiation(bemio, {rho, g}); });
+  expect_overflow(capytaine + ":/diffraction_force + /Froude_Krylov_force",
+                  "omega = 0.785398, wave_direction = 0.523599, influenced_dof = Heave, re of the sum = inf; expected",
+                  [&] { bem::read_capytaine_excitation(capytaine, {rho, g}); });
 }
 
 }  // namespace

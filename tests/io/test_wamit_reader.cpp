@@ -1,7 +1,8 @@
 // BEM readers: H7 (the MSS semi's WAMIT files against the numbers of
 // docs/physics/hydrodynamics.md §12 and semisub.out, a Hulme hemisphere table written as a
 // WAMIT .1 with ULEN = 5 m), the frequency-domain heave RAO against WAMIT's own .4,
-// and one test per malformed file in tests/bad_bem/ (file and line in the message).
+// and one test per malformed file in tests/bad_bem/ (file and line in the message), and
+// the fuzzer's WAMIT findings (fuzz/regressions/fuzz_wamit/).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -208,6 +209,26 @@ TEST(HydroBem, BadExcitationAndHydrostaticFilesNameFileAndLine) {
   expect_data_error(base + ".3", 2, "period 6 s", [&] { bem::read_wamit(base); });
   expect_data_error(testing::source_path("tests/bad_bem/no_such_file.1"), 0, "cannot be opened",
                     [&] { bem::read_wamit_1(testing::source_path("tests/bad_bem/no_such_file.1")); });
+}
+
+// Values the fuzzer found that are finite as written but not once made dimensional
+// (rho w L^k B_bar, rho g L^k X_bar and C_bar) or whose frequency 2 pi / PER is not:
+// they used to be returned as inf (a silent NaN later in the run).
+TEST(HydroBem, ValuesThatOverflowOnceDimensionalNameFileAndLine) {
+  const std::string dir = "fuzz/regressions/fuzz_wamit/";
+  const bem::WamitScaling scaling{rho, g, 2.0};
+  const std::string period = testing::source_path(dir + "period_whose_frequency_overflows.1");
+  expect_data_error(period, 3, "PER = 1e-310, whose frequency 2 pi / PER overflows",
+                    [&] { bem::read_wamit_1(period, scaling); });
+  const std::string damping = testing::source_path(dir + "damping_overflows_once_dimensional.1");
+  expect_data_error(damping, 2, "1e+308 in column 5, which overflows to inf",
+                    [&] { bem::read_wamit_1(damping, scaling); });
+  const std::string excitation = testing::source_path(dir + "excitation_overflows_once_dimensional.3");
+  expect_data_error(excitation, 1, "1e+308 in column 6, which overflows to inf",
+                    [&] { bem::read_wamit_3(excitation, scaling); });
+  const std::string stiffness = testing::source_path(dir + "stiffness_overflows_once_dimensional.hst");
+  expect_data_error(stiffness, 2, "1e+308 in column 3, which overflows to inf",
+                    [&] { bem::read_wamit_hst(stiffness, scaling); });
 }
 
 }  // namespace

@@ -1,0 +1,7 @@
+// The Capytaine netCDF4 reader (.nc): mutated HDF5 files.
+#include "fuzz/fuzz_bem_reader.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  heavesim::fuzz::read_bem_file_every_way(data, size, "fuzz.nc", "fuzz_capytaine");
+  return 0;
+}

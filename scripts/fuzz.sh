@@ -1,0 +1,179 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (fuzz/; clang 14, AddressSanitizer + UBSan) in
+# build-fuzz/, replays the committed regression inputs, then fuzzes each target for a
+# bounded time from a seed corpus gathered from the project's own cases and data files.
+#   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
+#     SECONDS_PER_TARGET  default 60
+#     TARGET              fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine (default all)
+# Prints per target the executions, libFuzzer's final coverage (cov: edges, ft: features)
+# and the findings (crash, unexpected exception, leak, timeout, out-of-memory: saved under
+# build-fuzz/work/<target>/findings/; each target fuzzes its whole budget past findings).
+# Exits 1 if a regression input fails or a finding is in this project's code (findings
+# inside libhdf5 are listed, not failed on). Environment:
+#   HEAVESIM_FUZZ_SKIP_KNOWN=1  while fuzzing (not replaying), let known findings that are
+#                               being fixed elsewhere pass (fuzz/fuzz_support.hpp)
+#   HEAVESIM_BUILD_LOCK=FILE    hold flock FILE while building (shared machines)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+source_dir=$PWD
+seconds=${1:-60}
+shift || true
+all_targets=(fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine)
+targets=("$@")
+((${#targets[@]} > 0)) || targets=("${all_targets[@]}")
+build_dir=build-fuzz
+work_dir=$source_dir/$build_dir/work
+
+# ---------------------------------------------------------------- build
+lock=()
+[[ -n "${HEAVESIM_BUILD_LOCK:-}" ]] && lock=(flock "$HEAVESIM_BUILD_LOCK")
+if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
+  launcher=()
+  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+    -DHEAVESIM_FUZZ=ON -DHEAVESIM_BUILD_TESTS=OFF -DHEAVESIM_BUILD_BENCH=OFF "${launcher[@]}"
+fi
+build_targets=()
+for target in "${targets[@]}"; do build_targets+=(--target "$target"); done
+"${lock[@]}" cmake --build "$build_dir" -j "$(nproc)" "${build_targets[@]}"
+
+# ---------------------------------------------------------------- seeds
+# Seeds are the project's own inputs, gathered afresh each run (nothing large is
+# committed); fuzz/seeds/<target>/ adds the few that exercise what no project file does.
+gather_seeds() {
+  local target=$1 seeds=$2
+  rm -rf "$seeds"
+  mkdir -p "$seeds"
+  local files=()
+  case $target in
+    fuzz_case) mapfile -t files < <(find cases tests/cases tests/bad_cases -name '*.yaml') ;;
+    fuzz_expression) files=() ;;
+    fuzz_wamit) mapfile -t files < <(find data tests/bem tests/bad_bem -regex '.*\.\(1\|3\|hst\)') ;;
+    fuzz_bemio) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.h5') ;;
+    fuzz_capytaine) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.nc') ;;
+  esac
+  [[ -d fuzz/seeds/$target ]] && mapfile -t -O "${#files[@]}" files < <(find "fuzz/seeds/$target" -type f)
+  local file
+  for file in "${files[@]}"; do cp "$file" "$seeds/$(echo "$file" | tr / _)"; done
+}
+
+# A dictionary of the case schema's keys and the words the readers accept, taken from the
+# sources so that it follows the schema; the HDF5 formats' dataset names likewise.
+write_dictionary() {
+  local target=$1 dictionary=$2
+  case $target in
+    fuzz_case)
+      {
+        grep -ohE '\{"[a-z_0-9]+",' app/case/case_schema.cpp app/forces/*.cpp | sed -E 's/\{"(.*)",/"\1: "/'
+        grep -ohE '"[a-z][a-z0-9_]{2,30}"' app/case/*.cpp app/forces/*.cpp
+        printf '%s\n' '"#%%\x0A"' '"include: part.yaml\x0A"' '"&a "' '"*a"' '"<<: "' '"!!binary "' '"1e308"' \
+          '"-1e-300"' '".nan"' '"-.inf"' '"4294967296"' '"[0, 0, 1]"' '"\x0A  - "' '"{}"'
+      } | sort -u >"$dictionary" ;;
+    fuzz_expression)
+      printf '%s\n' '"sin("' '"cos("' '"tan("' '"sqrt("' '"exp("' '"log("' '"ln("' '"log10("' '"abs("' '"sign("' \
+        '"rint("' '"min("' '"max("' '"sum("' '"avg("' '"deg("' '"rad("' '"pi"' '"_pi"' '"_e"' '"t"' '"?"' '":"' \
+        '"^"' '"&&"' '"||"' '"1e308"' '"1e-308"' '"="' '"\x0A"' '","' >"$dictionary" ;;
+    fuzz_wamit)
+      printf '%s\n' '"-1"' '"0"' '"1.0E+00"' '"-.1E-308"' '"NaN"' '"Infinity"' '"1e400"' '"  6"' '"\x0A"' \
+        '" 1 1 "' '"2147483648"' >"$dictionary" ;;
+    fuzz_bemio | fuzz_capytaine)
+      grep -ohE '"/?[a-zA-Z_][a-zA-Z0-9_/]{2,40}"' io/bem/*.cpp | sort -u >"$dictionary" ;;
+  esac
+}
+
+max_len_of() {
+  case $1 in
+    fuzz_case) echo 16384 ;;
+    fuzz_expression) echo 512 ;;
+    fuzz_wamit) echo 32768 ;;
+    *) echo 65536 ;;
+  esac
+}
+
+# ---------------------------------------------------------------- run
+# Where a finding happened: the finding replayed alone, and the first stack frame that is
+# not the sanitizer's, libc's or libFuzzer's. A finding inside libhdf5 (its parser of a
+# damaged file, e.g. H5HG_read on a damaged global heap) is listed but not failed on: it
+# is not this project's code, and the readers guard what they can before calling it
+# (io/hdf5/hdf5_reader.cpp). Nor is an out-of-memory or timeout that does not happen
+# when its input runs alone: memory or time accumulated over a job's many runs
+# (libhdf5's free lists keep what they allocate).
+where_found() {
+  local binary=$1 input=$2 report
+  if report=$(env -u HEAVESIM_FUZZ_SKIP_KNOWN "$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then
+    echo "not reproduced alone"
+    return
+  fi
+  echo "$report" | grep -aE '^ +#[0-9]+ 0x' |
+    grep -avE ' in (__interceptor_|__asan|__sanitizer|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|free|operator new|abort|raise|__pthread|__libc|__mem|_start|main)|libc\.so|sysdeps|libclang_rt|/compiler-rt/' |
+    head -1
+}
+
+asan_options=${ASAN_OPTIONS:-detect_leaks=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$source_dir/fuzz/lsan.supp:print_suppressions=0}
+failed=0
+summary=()
+for target in "${targets[@]}"; do
+  binary=$build_dir/fuzz/$target
+  dir=$work_dir/$target
+  # libhdf5 has no frame pointers: its allocations need full stacks for the leak
+  # suppressions to see where they come from (slow; only the HDF5 targets need it).
+  export ASAN_OPTIONS=$asan_options
+  [[ $target == fuzz_bemio || $target == fuzz_capytaine ]] && ASAN_OPTIONS+=:fast_unwind_on_malloc=0
+  rm -rf "$dir/findings" "$dir/findings.txt"
+  mkdir -p "$dir/corpus" "$dir/findings"
+  # Every committed finding must now be handled (each input run once).
+  regressions=(fuzz/regressions/$target/*)
+  regression_result="no regression inputs"
+  if [[ -e "${regressions[0]}" ]]; then
+    if env -u HEAVESIM_FUZZ_SKIP_KNOWN "$binary" -runs=1 -timeout=30 -rss_limit_mb=2048 "${regressions[@]}" >"$dir/regressions.log" 2>&1; then
+      regression_result="${#regressions[@]} regression inputs pass"
+    else
+      regression_result="REGRESSION INPUT FAILS (see $dir/regressions.log)"
+      failed=1
+    fi
+  fi
+  gather_seeds "$target" "$dir/seeds"
+  write_dictionary "$target" "$dir/dictionary"
+  # -fork=1: one child process at a time that is restarted past each finding, so the
+  # whole budget is fuzzed and every finding kept.
+  echo "fuzz: $target for ${seconds}s ($regression_result)"
+  "$binary" -max_total_time="$seconds" -timeout=20 -rss_limit_mb=2048 -max_len="$(max_len_of "$target")" \
+    -dict="$dir/dictionary" -artifact_prefix="$dir/findings/" -print_final_stats=1 \
+    -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
+    "$dir/corpus" "$dir/seeds" >"$dir/fuzz.log" 2>&1 || true
+  # Executions and coverage: libFuzzer's last status line ("#N: cov: C ft: F ...").
+  status_line=$(grep -aE '^#[0-9]+' "$dir/fuzz.log" | tail -1 || true)
+  executions=$(echo "$status_line" | grep -oE '^#[0-9]+' | tr -d '#' || true)
+  coverage=$(echo "$status_line" | grep -oE 'cov: [0-9]+ ft: [0-9]+' || true)
+  ours=0 inside_hdf5=0 not_reproduced=0
+  for finding in "$dir"/findings/*; do
+    [[ -e "$finding" ]] || continue
+    frame=$(where_found "$binary" "$finding" || true)
+    if [[ "$frame" == "not reproduced alone" && ( "$(basename "$finding")" == oom-* || "$(basename "$finding")" == timeout-* ) ]]; then
+      not_reproduced=$((not_reproduced + 1))
+      echo "fuzz: $target: not reproduced alone: $(basename "$finding")" >>"$dir/findings.txt"
+    elif [[ "$frame" == *libhdf5* ]]; then
+      inside_hdf5=$((inside_hdf5 + 1))
+      echo "fuzz: $target: inside libhdf5: $(basename "$finding"):${frame#*in }" >>"$dir/findings.txt"
+    else
+      ours=$((ours + 1))
+      echo "fuzz: $target: FINDING $(basename "$finding"):${frame:+${frame#*in }}" >>"$dir/findings.txt"
+    fi
+  done
+  line="$target: ${executions:-0} executions, ${coverage:-no coverage reported}, $ours findings"
+  ((inside_hdf5 == 0)) || line+=" (+ $inside_hdf5 inside libhdf5)"
+  ((not_reproduced == 0)) || line+=" (+ $not_reproduced out-of-memory/timeouts not reproduced alone)"
+  line+=", $regression_result"
+  if ((ours > 0)) || [[ -z "$executions" ]]; then
+    line+=" -- FINDING (log: $dir/fuzz.log, inputs: $dir/findings/, where: $dir/findings.txt)"
+    failed=1
+  fi
+  echo "fuzz: $line"
+  summary+=("$line")
+done
+echo "fuzz: summary"
+printf '  %s\n' "${summary[@]}"
+exit $failed
