@@ -49,7 +49,9 @@ TEST(FailureDiagnosis, EveryIntegratorNamesTimePlaceAndRemedy) {
     EXPECT_EQ(result.exit_code, 3) << label << ": " << result.output;
     std::smatch match;
     ASSERT_TRUE(std::regex_search(result.output, match, failure_time)) << label << ": " << result.output;
-    if (failure.time > 0.0) EXPECT_NEAR(std::stod(match[1]), failure.time, 0.05 * failure.time) << label;
+    if (failure.time > 0.0) {
+      EXPECT_NEAR(std::stod(match[1]), failure.time, 0.05 * failure.time) << label;
+    }
     bool named = false;
     for (const std::string& name : failure.names) named |= result.output.find("'" + name + "'") != std::string::npos;
     EXPECT_TRUE(named) << label << " names none of the expected joints, bodies or constraints: " << result.output;
