@@ -1,5 +1,7 @@
 #include "app/case/case_node.hpp"
 
+#include "hydro/data_file.hpp"
+
 #include <yaml-cpp/anchor.h>
 #include <yaml-cpp/depthguard.h>
 #include <yaml-cpp/eventhandler.h>
@@ -9,7 +11,6 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -318,33 +319,7 @@ CaseNode parse_yaml_text(const std::string& text, const std::string& origin, std
 }
 
 std::string unreadable_case_file(const std::string& path) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::file_status status = fs::status(path, error);  // follows symbolic links
-  switch (status.type()) {
-    case fs::file_type::not_found:
-      return "a path that does not exist";
-    case fs::file_type::directory:
-      return "a directory";
-    case fs::file_type::fifo:
-      return "a named pipe (FIFO)";
-    case fs::file_type::character:
-      return "a character device";
-    case fs::file_type::block:
-      return "a block device";
-    case fs::file_type::socket:
-      return "a socket";
-    case fs::file_type::regular: {
-      const std::uintmax_t size = fs::file_size(path, error);
-      if (error) break;
-      if (size > max_case_file_bytes) return "a file of " + std::to_string(size) + " bytes";
-      return "";
-    }
-    default:
-      break;
-  }
-  if (error) return "a path that cannot be examined (" + error.message() + ")";
-  return "something other than a regular file";
+  return hydro::unreadable_file(path, max_case_file_bytes);
 }
 
 std::string readable_case_file_expectation() {

@@ -6,6 +6,7 @@
 
 #include "app/scene/recorded_load.hpp"
 #include "app/scene/scene_build_context.hpp"
+#include "hydro/data_file.hpp"
 
 namespace heavesim {
 
@@ -47,9 +48,12 @@ std::string read_path(const NodeReader& reader) {
   const std::string text = reader.text();
   std::filesystem::path path(text);
   if (path.is_relative()) path = std::filesystem::path(reader.location().file).parent_path() / path;
-  if (!std::filesystem::is_regular_file(path))
-    reader.fail(fmt::format("'{}', which is not a readable file ({})", text, path.string()),
-                "a path to an existing data file, relative to the case file");
+  // What the path names, said at the key (a FIFO, a device, a directory, too large);
+  // the readers check again (hydro/data_file.hpp) for callers that are not a case.
+  if (const std::string problem = hydro::unreadable_file(path.string(), hydro::max_data_file_bytes); !problem.empty())
+    reader.fail(fmt::format("'{}', {} ({})", text, problem, path.string()),
+                fmt::format("a readable data file (a regular file of at most {} bytes), relative to the case file",
+                            hydro::max_data_file_bytes));
   return path.lexically_normal().string();
 }
 

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "hydro/data_error.hpp"
+#include "hydro/data_file.hpp"
 
 namespace heavesim::hydro {
 namespace {
@@ -75,7 +76,9 @@ struct NumberReader {
   std::istringstream line_stream;
   int line = 0;
 
-  explicit NumberReader(std::string p) : path(std::move(p)), in(path) {
+  explicit NumberReader(std::string p) : path(std::move(p)) {
+    require_readable_data_file(path, "hull mesh");  // before open(): a FIFO's open blocks
+    in.open(path);
     if (!in) throw DataError(path, 0, "a file that cannot be opened", "a readable file");
   }
   bool next_line(std::string& text) {
@@ -142,6 +145,7 @@ HullMesh read_gdf(const std::string& path) {
 }
 
 HullMesh read_stl(const std::string& path) {
+  require_readable_data_file(path, "STL hull mesh");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw DataError(path, 0, "a file that cannot be opened", "a readable STL file");
   std::string content((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

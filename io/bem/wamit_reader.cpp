@@ -10,6 +10,8 @@
 
 #include <fmt/format.h>
 
+#include "hydro/data_file.hpp"
+
 namespace heavesim::bem {
 
 using hydro::BemData;
@@ -18,6 +20,7 @@ using hydro::DataError;
 using hydro::ExcitationData;
 using hydro::Matrix6;
 using hydro::RadiationData;
+using hydro::require_readable_data_file;
 namespace {
 
 struct Row {
@@ -29,6 +32,7 @@ struct Row {
 /// Every token must be a finite number and every row must have one of the allowed
 /// column counts (checked by the caller through `columns`).
 std::vector<Row> read_rows(const std::string& path) {
+  require_readable_data_file(path, "WAMIT file");
   std::ifstream in(path);
   if (!in) throw DataError(path, 0, "a file that cannot be opened", "a readable WAMIT file");
   std::vector<Row> rows;

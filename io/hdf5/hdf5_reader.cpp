@@ -3,10 +3,11 @@
 #include <hdf5_hl.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <numeric>
 
 #include <fmt/format.h>
+
+#include "hydro/data_file.hpp"
 
 namespace heavesim::hdf5 {
 namespace {
@@ -96,8 +97,7 @@ std::string shape_text(const std::vector<hsize_t>& shape) {
 Reader::Reader(std::string path, std::string kind) : path_(std::move(path)), kind_(std::move(kind)) {
   // Errors are reported by return codes below, not by HDF5's own stack print.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  if (!std::filesystem::is_regular_file(path_))
-    throw hydro::DataError(path_, 0, "a file that cannot be opened", "a readable " + kind_);
+  hydro::require_readable_data_file(path_, kind_);
   if (H5Fis_hdf5(path_.c_str()) <= 0)
     throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_);
   file_ = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));

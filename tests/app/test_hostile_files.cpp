@@ -225,5 +225,27 @@ TEST(ParameterNames, ReservedNamesComeFromTheParserAndTheCase) {
     EXPECT_EQ(parameter_name_problem(name), "") << name;
 }
 
+TEST_F(HostileFiles, DataFilesThatAreNotRegularFilesAreBadDataNotAHang) {
+  // The readers of BEM coefficients and hull meshes check what a path names before
+  // opening it (hydro/data_file.hpp), as the case reader does: a FIFO's open() blocked
+  // and /dev/zero as a text file never ended.
+  const std::string fifo = path("pipe");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  std::filesystem::create_directories(path("folder"));
+  const std::string linear = testing::source_path("cases/hydro/heave_decay.yaml");
+  const std::string nonlinear = testing::source_path("cases/hydro/heave_decay_nonlinear.yaml");
+  struct Probe {
+    std::string target, what;
+  };
+  for (const Probe& probe : {Probe{fifo, "a named pipe (FIFO)"}, Probe{"/dev/zero", "a character device"},
+                             Probe{path("folder"), "a directory"}}) {
+    SCOPED_TRACE(probe.target);
+    expect_bad_input(check(linear, "--set 'forces[hydrostatics].hst=" + probe.target + "'"),
+                     {probe.target, probe.what, "expected a readable data file"});
+    expect_bad_input(check(nonlinear, "--set 'forces[hydrostatics].mesh=" + probe.target + "'"),
+                     {probe.target, probe.what, "expected a readable data file"});
+  }
+}
+
 }  // namespace
 }  // namespace heavesim

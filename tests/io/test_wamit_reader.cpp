@@ -6,8 +6,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <functional>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "hydro/analysis/frequency_domain_rao.hpp"
+#include "hydro/hydrostatics/hull_mesh.hpp"
 #include "io/bem/wamit_reader.hpp"
 #include "tests/test_support.hpp"
 
@@ -207,7 +214,7 @@ TEST(HydroBem, BadExcitationAndHydrostaticFilesNameFileAndLine) {
   }
   const std::string base = testing::source_path("tests/bad_bem/frequency_mismatch");
   expect_data_error(base + ".3", 2, "period 6 s", [&] { bem::read_wamit(base); });
-  expect_data_error(testing::source_path("tests/bad_bem/no_such_file.1"), 0, "cannot be opened",
+  expect_data_error(testing::source_path("tests/bad_bem/no_such_file.1"), 0, "a path that does not exist",
                     [&] { bem::read_wamit_1(testing::source_path("tests/bad_bem/no_such_file.1")); });
 }
 
@@ -229,6 +236,34 @@ TEST(HydroBem, ValuesThatOverflowOnceDimensionalNameFileAndLine) {
   const std::string stiffness = testing::source_path(dir + "stiffness_overflows_once_dimensional.hst");
   expect_data_error(stiffness, 2, "1e+308 in column 3, which overflows to inf",
                     [&] { bem::read_wamit_hst(stiffness, scaling); });
+}
+
+TEST(HydroBem, ReadersRefuseWhatIsNotARegularFileBeforeOpeningIt) {
+  // A FIFO's open() blocks until a writer comes; /dev/zero as text never ends; a
+  // directory opens and reads as nothing. Each reader names what the path is instead
+  // (hydro/data_file.hpp), whoever calls it.
+  const std::filesystem::path directory =
+      std::filesystem::temp_directory_path() / ("heavesim_data_paths_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(directory);
+  std::filesystem::create_directories(directory / "folder");
+  const std::string fifo = (directory / "pipe").string();
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::vector<std::pair<std::string, std::string>> paths = {
+      {fifo, "a named pipe (FIFO)"}, {"/dev/zero", "a character device"}, {(directory / "folder").string(), "a directory"}};
+  for (const auto& [path, what] : paths) {
+    for (const auto& read : std::vector<std::function<void()>>{
+             [&path = path] { bem::read_wamit_1(path); }, [&path = path] { bem::read_wamit_hst(path); },
+             [&path = path] { hydro::read_gdf(path); }, [&path = path] { hydro::read_stl(path); }}) {
+      try {
+        read();
+        ADD_FAILURE() << path << " was read";
+      } catch (const hydro::DataError& error) {
+        EXPECT_EQ(error.file(), path);
+        EXPECT_EQ(error.found(), what);
+      }
+    }
+  }
+  std::filesystem::remove_all(directory);
 }
 
 }  // namespace
