@@ -10,7 +10,7 @@
 #include "app/case/case_definition.hpp"
 #include "app/scene/scene.hpp"
 #include "fuzz/fuzz_support.hpp"
-#include "kernel/system/ode_system.hpp"
+#include "kernel/math/numerical_error.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace heavesim;

@@ -31,9 +31,6 @@ std::vector<std::string_view> lines(std::string_view text);
 /// Call from a catch (...) block: prints the exception's type and message and aborts,
 /// which libFuzzer reports as a crash with the input saved. An exception the contract
 /// does not allow (anything but the reader's own error type) is a finding.
-/// With HEAVESIM_FUZZ_SKIP_KNOWN=1 in the environment, a finding of a known class that
-/// is being fixed elsewhere returns instead, so that fuzzing goes on past it: an escaping
-/// mu::ParserError (parameter names muParser refuses, /tmp/fuzz-findings.md F1).
 void report_unexpected_exception(const char* target);
 
 }  // namespace heavesim::fuzz

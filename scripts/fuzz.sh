@@ -10,8 +10,6 @@
 # build-fuzz/work/<target>/findings/; each target fuzzes its whole budget past findings).
 # Exits 1 if a regression input fails or a finding is in this project's code (findings
 # inside libhdf5 are listed, not failed on). Environment:
-#   HEAVESIM_FUZZ_SKIP_KNOWN=1  while fuzzing (not replaying), let known findings that are
-#                               being fixed elsewhere pass (fuzz/fuzz_support.hpp)
 #   HEAVESIM_BUILD_LOCK=FILE    hold flock FILE while building (shared machines)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -48,7 +46,6 @@ gather_seeds() {
   local files=()
   case $target in
     fuzz_case) mapfile -t files < <(find cases tests/cases tests/bad_cases -name '*.yaml') ;;
-    fuzz_expression) files=() ;;
     fuzz_wamit) mapfile -t files < <(find data tests/bem tests/bad_bem -regex '.*\.\(1\|3\|hst\)') ;;
     fuzz_bemio) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.h5') ;;
     fuzz_capytaine) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.nc') ;;
@@ -101,7 +98,7 @@ max_len_of() {
 # (libhdf5's free lists keep what they allocate).
 where_found() {
   local binary=$1 input=$2 report
-  if report=$(env -u HEAVESIM_FUZZ_SKIP_KNOWN "$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then
+  if report=$("$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then
     echo "not reproduced alone"
     return
   fi
@@ -128,7 +125,7 @@ for target in "${targets[@]}"; do
   regressions=(fuzz/regressions/$target/*)
   regression_result="no regression inputs"
   if [[ -e "${regressions[0]}" ]]; then
-    if env -u HEAVESIM_FUZZ_SKIP_KNOWN "$binary" -runs=1 -timeout=30 -rss_limit_mb=2048 "${regressions[@]}" >"$dir/regressions.log" 2>&1; then
+    if "$binary" -runs=1 -timeout=30 -rss_limit_mb=2048 "${regressions[@]}" >"$dir/regressions.log" 2>&1; then
       regression_result="${#regressions[@]} regression inputs pass"
     else
       regression_result="REGRESSION INPUT FAILS (see $dir/regressions.log)"

@@ -29,7 +29,8 @@ MUTATIONS = [("x1e200", lambda v: f"({v})*1e200"), ("x1e-9", lambda v: f"({v})*1
 
 
 def is_named_list(node):
-    return isinstance(node, list) and node and all(isinstance(i, dict) and "name" in i for i in node)
+    return isinstance(node, list) and node and all(
+        isinstance(i, dict) and "name" in i and not isinstance(i["name"], (dict, list)) for i in node)
 
 
 def merge_into(base, overlay):
@@ -61,11 +62,7 @@ def load_resolved(path):
 
 
 def is_number(value):
-    if isinstance(value, bool):
-        return False
-    if isinstance(value, (int, float)):
-        return True
-    return False
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
 
 
 def numeric_leaves(node, path=""):

@@ -1,6 +1,8 @@
 #pragma once
 // A loaded and checked case: everything needed to build and run the scene, in SI
 // units and kernel types, plus where each item came from (for later error messages).
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -29,6 +31,17 @@ struct SolverSettings {
   // integrator.constraint_tolerance: largest |Phi| accepted at assembly, after each
   // projection and at the end of an HHT step [m or rad].
 };
+
+/// Output intervals of a run from solver.t_start to solver.t_end, the last one ending
+/// exactly on t_end (at least 1). The run-size limits keep it far below LONG_MAX.
+inline long output_interval_count(const SolverSettings& solver, double output_interval) {
+  return std::max(1L, std::lround((solver.t_end - solver.t_start) / output_interval));
+}
+/// Samples a run records: t_start and the end of every output interval (the result file
+/// reserves this many rows; the run-size limits count them).
+inline long output_sample_count(const SolverSettings& solver, double output_interval) {
+  return output_interval_count(solver, output_interval) + 1;
+}
 
 struct OutputSettings {
   double interval = 0.01;  // s between recorded samples

@@ -13,7 +13,7 @@
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/time_function.hpp"
-#include "kernel/system/ode_system.hpp"
+#include "kernel/math/numerical_error.hpp"
 #include "kernel/spatial/rotation.hpp"
 
 #include <filesystem>

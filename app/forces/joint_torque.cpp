@@ -39,7 +39,6 @@ JointTorqueDefinition JointTorqueDefinition::read(const NodeReader& item, const 
   } catch (const std::invalid_argument& e) {
     torque.fail(torque.node().describe() + " (" + e.what() + ")", expected_torque);
   }
-  def.torque_uses_time = def.torque->position_uses_time();
   return def;
 }
 
@@ -58,7 +57,7 @@ void JointTorqueDefinition::build(const std::string& name, SceneBuildContext& co
                         "0 to " + std::to_string(target.nv - 1) + " (the coordinates of joint '" + joint + "')");
   context.system.add_force_element(std::make_unique<JointTorque>(
       name, target.v_index + coordinate, [function = torque](double t) { return function->position(t); },
-      torque_uses_time));
+      torque->position_uses_time()));
 }
 
 }  // namespace heavesim

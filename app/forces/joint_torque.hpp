@@ -21,7 +21,6 @@ struct JointTorqueDefinition {
   std::string joint;                          // a revolute, prismatic, cylindrical or universal joint
   int coordinate = 0;                         // which of its coordinates (0 for a 1-DoF joint)
   std::shared_ptr<const TimeFunction> torque;  // tau(t) [N m or N], parsed from its expression of t
-  bool torque_uses_time = false;               // whether the expression reads t
 };
 
 }  // namespace heavesim

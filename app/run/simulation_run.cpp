@@ -5,19 +5,9 @@
 
 namespace heavesim {
 
-namespace {
-long output_intervals(const SolverSettings& solver, double output_interval) {
-  return std::max(1L, std::lround((solver.t_end - solver.t_start) / output_interval));
-}
-}  // namespace
-
-long output_sample_count(const SolverSettings& solver, double output_interval) {
-  return output_intervals(solver, output_interval) + 1;
-}
-
 RunOutcome run_simulation(Scene& scene, const SolverSettings& solver, double output_interval,
                           Integrator& integrator, const Observer& observe) {
-  const long intervals = output_intervals(solver, output_interval);
+  const long intervals = output_interval_count(solver, output_interval);
   RunOutcome outcome;
   integrator.initialize(solver.t_start, scene.initial_state);
   outcome.time_reached = solver.t_start;

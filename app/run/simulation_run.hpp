@@ -18,10 +18,6 @@ struct RunOutcome {
   IntegratorStatistics statistics;
 };
 
-/// Samples a run from solver.t_start to solver.t_end observes: t_start and every output
-/// interval, the last landing exactly on t_end (the result file reserves this many rows).
-long output_sample_count(const SolverSettings& solver, double output_interval);
-
 /// Integrates the scene from solver.t_start to solver.t_end, observing every
 /// output interval (the last sample lands exactly on t_end). NumericalError
 /// propagates; `integrator` keeps the state reached.

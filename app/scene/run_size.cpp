@@ -12,7 +12,7 @@ RunSize estimate_run_size(const CaseDefinition& definition, const Scene& scene) 
   const OutputSettings& output = definition.output;
   const Model& model = *scene.model;
   RunSize size;
-  size.samples = std::floor((definition.solver.t_end - definition.solver.t_start) / output.interval + 0.5) + 1.0;
+  size.samples = static_cast<double>(output_sample_count(definition.solver, output.interval));
   size.columns = 1;  // time
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];

@@ -3,7 +3,6 @@
 #include <hdf5_hl.h>
 
 #include <algorithm>
-#include <numeric>
 
 #include <fmt/format.h>
 

@@ -75,7 +75,6 @@ void HhtIntegrator::initialize(double t0, const VectorX& y0) {
   schur_solver_ = RegularizedSymmetricSolver(kept);
   projection_residual_.resize(kept);
   projection_multipliers_.resize(kept);
-  projection_target_.resize(kept);
 }
 
 void HhtIntegrator::iterate_state(double h) {
@@ -268,9 +267,8 @@ void HhtIntegrator::accept_step(double h) {
 }
 
 void HhtIntegrator::project(VectorX& x, const VectorX& target) {
-  projection_target_ = target(projection_rows_);
   projection_residual_.noalias() = projection_jacobian_ * x;
-  projection_residual_ -= projection_target_;
+  projection_residual_ -= target(projection_rows_);
   schur_solver_.solve(projection_residual_, projection_multipliers_);
   x.noalias() -= minv_jt_ * projection_multipliers_;
 }

@@ -88,7 +88,7 @@ class HhtIntegrator : public Integrator {
   MatrixX projection_jacobian_;                // J of those rows
   MatrixX minv_jt_, schur_;                    // M^-1 J^T, J M^-1 J^T (those rows)
   RegularizedSymmetricSolver schur_solver_;
-  VectorX projection_residual_, projection_multipliers_, projection_target_, speeds_, gamma_target_;
+  VectorX projection_residual_, projection_multipliers_, speeds_, gamma_target_;
   // Diagnosis of the last failed step
   double worst_residual_ = 0.0;
   std::optional<NumericalError> last_failure_;  // an evaluation's own error (non-finite, out of range)

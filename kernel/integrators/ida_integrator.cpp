@@ -190,18 +190,21 @@ void IdaIntegrator::advance_to(double t_out) {
                                : "the index-2 form cannot resolve the multipliers where the loops lose rank: "
                                  "solver.integrator: hht carries a mechanism through singular configurations");
     }
-    const FastestMode mode = have_state ? dae_.fastest_mode_note(t_reached, last_state) : FastestMode{};
+    // Only too much work can be a fast mode's doing: the linearization (an eigenvalue
+    // problem) is not done for the other failures.
+    const FastestMode mode =
+        have_state && flag == IDA_TOO_MUCH_WORK ? dae_.fastest_mode_note(t_reached, last_state) : FastestMode{};
     // About ten steps per period resolve an oscillation at IDA's usual tolerances; the
     // mode is the cause when it alone needs a tenth of the allowed steps.
     const double interval = t_out - t_, omega = std::abs(mode.eigenvalue.imag());
-    const double steps_needed = 10.0 * interval * omega / (2.0 * 3.141592653589793);
+    const double periods = interval * omega / (2.0 * std::numbers::pi), steps_needed = 10.0 * periods;
     if (flag == IDA_TOO_MUCH_WORK && mode.found() && omega >= std::abs(mode.eigenvalue.real()) &&
         steps_needed >= 0.1 * static_cast<double>(settings_.max_steps_per_output)) {
       char text[200];
       std::snprintf(text, sizeof text,
                     ": a barely damped oscillation that IDA resolves, about %.3g of its periods in the output "
                     "interval of %.3g s (solver.max_steps = %ld)",
-                    interval * omega / (2.0 * 3.141592653589793), interval, settings_.max_steps_per_output);
+                    periods, interval, settings_.max_steps_per_output);
       std::string suggestion = "solver.integrator: hht steps over a fast oscillation it need not resolve (A-stable, "
                                "fixed step)";
       if (!mode.element.empty()) suggestion += "; or damp or soften " + mode.element;

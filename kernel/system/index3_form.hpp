@@ -31,7 +31,6 @@ class Index3Form final : public SecondOrderSystem {
     return system_.describe_state_component(system_.model().nq + index);  // v, then z: contiguous in y
   }
   StateDiagnosis diagnose_state(double t, const VectorX& y) override { return system_.diagnose_state(t, y); }
-  FastestMode fastest_mode(double t, const VectorX& y) override { return find_fastest_mode(system_, t, y); }
 
  private:
   MultibodySystem& system_;

@@ -215,8 +215,9 @@ StateDiagnosis MultibodySystem::constraint_loss(double max_ratio) {
   const VectorX lost = svd.matrixU().col(rank - 1).cwiseAbs();
   std::string rows, drivers;
   std::vector<const Constraint*> named;
+  const double largest = lost.maxCoeff();
   for (int row = 0; row < lost.size(); ++row) {
-    if (lost[row] < 0.2 * lost.maxCoeff()) continue;
+    if (lost[row] < 0.2 * largest) continue;
     const Constraint* constraint = constraint_of_row(model, row);
     rows += (rows.empty() ? "" : ", ") + describe_constraint_row(model, row);
     if (!constraint || std::find(named.begin(), named.end(), constraint) != named.end()) continue;

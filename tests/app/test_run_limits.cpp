@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "app/case/case_definition.hpp"
 #include "app/scene/run_size.hpp"

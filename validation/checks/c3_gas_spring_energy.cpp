@@ -85,8 +85,7 @@ std::vector<ValidationRow> check_c3_gas_spring_energy() {
   bool first = true;
   run_case("cases/validation/c3_gas_spring.yaml", {}, [&](double, const MultibodySystem& system) {
     const double s = system.configuration()[0];
-    const double energy = kinetic_energy(system.model(), system.data()) +
-                          gravity_potential_energy(system.model(), system.data());
+    const double energy = mechanical_energy(system);
     if (first) energy0 = energy, first = false;
     const double reference = oracle::gas_spring_work(balance, V0, A, n, p_atm, s);
     error = std::max(error, std::abs((energy - energy0) - reference));
