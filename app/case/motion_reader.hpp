@@ -1,0 +1,27 @@
+#pragma once
+// Prescribed motions f(t) in a case: the motion keys of a driver (position, velocity,
+// acceleration) read into a TimeFunction, and the checks of every expression of t over
+// the run before it starts (finite everywhere; given derivatives that agree).
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/case/case_definition.hpp"
+#include "app/case/expression.hpp"
+#include "app/case/node_reader.hpp"
+#include "app/case/time_function.hpp"
+
+namespace heavesim {
+
+/// The motion of the item (a driver): its `position` expression of t and the optional
+/// `velocity` and `acceleration`. Throws InputError at the key that does not parse.
+std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const std::string& name,
+                                                const ExpressionContext& expressions);
+
+/// Every expression of t in the case -- each driver's motion, each joint torque --
+/// evaluated over the run; a driver's given derivatives compared with its position's.
+/// `drivers` is the case's drivers section (the items in definition.drivers' order).
+void check_motions_over_run(const CaseDefinition& definition, const ExpressionContext& expressions,
+                            const std::optional<NodeReader>& drivers);
+
+}  // namespace heavesim
