@@ -25,6 +25,13 @@ constexpr KeySpec root_keys[] = {
     {"forces", "list", "–", "none", "force elements"},
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
+    {"initial", "choice", "–", "`given`", "`given`: start from the joints' `initial` values; `static`: from the static equilibrium"},
+    {"equilibrium", "map", "–", "see below", "settings of the static equilibrium solve"},
+};
+
+constexpr KeySpec equilibrium_keys[] = {
+    {"tolerance", "number", "–", "1e-10", "max |Q + J^T lambda| relative to the largest load; max |Phi| (m or rad); max |dz/dt|"},
+    {"max_iterations", "number", "–", "50", "Newton iterations"},
 };
 
 constexpr KeySpec environment_keys[] = {
@@ -194,6 +201,7 @@ constexpr SchemaSection fixed_sections[] = {
     {"drivers[i]", driver_keys},
     {"solver", solver_keys},
     {"output", output_keys},
+    {"equilibrium", equilibrium_keys},
 };
 
 bool in_form(std::string_view forms, std::string_view form) {

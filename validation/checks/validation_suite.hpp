@@ -76,5 +76,7 @@ std::vector<ValidationRow> check_h4_regular_wave_rao();
 std::vector<ValidationRow> check_h5_radiation_memory();
 std::vector<ValidationRow> check_h6_irregular_sea();
 std::vector<ValidationRow> check_h7_bem_readers();
+std::vector<ValidationRow> check_s1_spring_crane();
+std::vector<ValidationRow> check_s2_rig_statics();
 
 }  // namespace heavesim::validation
