@@ -47,6 +47,17 @@ int main(int argc, char** argv) {
   bool check_allow_large_runs = false;
   check->add_flag("--allow-large-runs", check_allow_large_runs, allow_large_help);
 
+  EquilibriumOptions equilibrium_options;
+  CLI::App* equilibrium = app.add_subcommand("equilibrium", "solve a case's static equilibrium; print and write it");
+  equilibrium->add_option("case", equilibrium_options.case_path, "case file (YAML)")->required();
+  equilibrium->add_option("-o,--output", equilibrium_options.output_path,
+                          "result file (default results/<case name>_equilibrium.h5)");
+  equilibrium->add_option("--write-initial", equilibrium_options.initial_path,
+                          "also write the joints' initial values at rest as a YAML fragment to include");
+  equilibrium->add_option("--set", equilibrium_options.overrides, "override a case value: key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  equilibrium->add_flag("-q,--quiet", equilibrium_options.quiet, "no summary");
+
   std::vector<std::string> validation_names;
   bool list_only = false;
   CLI::App* validate = app.add_subcommand("validate", "run the validation suite and print a PASS/FAIL table");
@@ -63,6 +74,7 @@ int main(int argc, char** argv) {
     if (*run) return run_command(run_options);
     if (*kinematics) return kinematics_command(kinematics_options);
     if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
+    if (*equilibrium) return equilibrium_command(equilibrium_options);
     if (*validate) return validate_command(validation_names, list_only);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());

@@ -12,6 +12,7 @@
 #include "app/forces/force_kinds.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/analysis/kinematic_analysis.hpp"
+#include "kernel/analysis/static_equilibrium.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "kernel/parameter_error.hpp"
@@ -96,6 +97,10 @@ struct CaseDefinition {
   OutputSettings output;
   KinematicSettings kinematics;  // the `kinematics` section (heavesim kinematics)
   RunLimits limits;
+  /// `initial: static`: a run starts from the static equilibrium (the joints' `initial`
+  /// values are its starting guess); `given` (default): from the joints' values.
+  bool initial_static = false;
+  EquilibriumSettings equilibrium;  // the `equilibrium` section (kernel/analysis/static_equilibrium.hpp)
 
   /// Where every key of the resolved case came from, by key path ("joints[2].axis",
   /// "forces[0].stroke.joint", "waves.hs"): the one source map into which errors found

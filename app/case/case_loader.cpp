@@ -372,6 +372,21 @@ void check_run_count(const NodeReader& key, const CaseDefinition& definition, do
                                 limit, what, duration / limit));
 }
 
+/// The `equilibrium` section: the static equilibrium solve's settings.
+void read_equilibrium(const NodeReader& reader, CaseDefinition& definition) {
+  reader.expect_section("equilibrium");
+  if (auto tolerance = reader.optional("tolerance")) {
+    definition.equilibrium.tolerance = tolerance->positive_number();
+    if (definition.equilibrium.tolerance < 1e-15 || definition.equilibrium.tolerance > 1e-2)
+      tolerance->fail(fmt::format("{:g}", definition.equilibrium.tolerance), "a tolerance from 1e-15 to 1e-2");
+  }
+  if (auto iterations = reader.optional("max_iterations")) {
+    const long value = iterations->integer();
+    if (value < 1 || value > 1000) iterations->fail(std::to_string(value), "1 to 1000 Newton iterations");
+    definition.equilibrium.max_iterations = static_cast<int>(value);
+  }
+}
+
 void read_solver(const NodeReader& reader, CaseDefinition& definition) {
   reader.expect_section("solver");
   SolverSettings& solver = definition.solver;
@@ -557,6 +572,8 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   read_solver(root["solver"], definition);
   read_output(root.optional("output"), root["solver"], definition);
   if (auto section = root.optional("kinematics")) read_kinematics(*section, definition.kinematics);
+  if (auto initial = root.optional("initial")) definition.initial_static = initial->choice({"given", "static"}) == "static";
+  if (auto section = root.optional("equilibrium")) read_equilibrium(*section, definition);
   check_motions_over_run(definition, expressions, root.optional("drivers"));
   return definition;
 }

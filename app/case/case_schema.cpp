@@ -26,6 +26,13 @@ constexpr KeySpec root_keys[] = {
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
     {"kinematics", "map", "–", "see below", "settings of `heavesim kinematics`"},
+    {"initial", "choice", "–", "`given`", "`given`: start from the joints' `initial` values; `static`: from the static equilibrium"},
+    {"equilibrium", "map", "–", "see below", "settings of the static equilibrium solve"},
+};
+
+constexpr KeySpec equilibrium_keys[] = {
+    {"tolerance", "number", "–", "1e-10", "max |Q + J^T lambda| relative to the largest load; max |Phi| (m or rad); max |dz/dt|"},
+    {"max_iterations", "number", "–", "50", "Newton iterations"},
 };
 
 constexpr KeySpec environment_keys[] = {
@@ -204,6 +211,7 @@ constexpr SchemaSection fixed_sections[] = {
     {"solver", solver_keys},
     {"output", output_keys},
     {"kinematics", kinematics_keys},
+    {"equilibrium", equilibrium_keys},
 };
 
 bool in_form(std::string_view forms, std::string_view form) {

@@ -10,6 +10,7 @@
 
 #include "app/forces/active_compensator.hpp"
 #include "app/forces/added_mass.hpp"
+#include "app/forces/body_load.hpp"
 #include "app/forces/ground_contact.hpp"
 #include "app/forces/hydrostatics.hpp"
 #include "app/forces/joint_torque.hpp"
@@ -37,7 +38,8 @@ using ForceKindDefinition = std::variant<
     WaveExcitationDefinition,
     LinearDampingDefinition,
     QuadraticDampingDefinition,
-    MooringDefinition>;
+    MooringDefinition,
+    BodyLoadDefinition>;
 
 /// A force element declared in `forces:`: its name and its kind's typed definition.
 struct ForceDefinition {

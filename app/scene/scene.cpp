@@ -145,6 +145,11 @@ Scene build_scene(const CaseDefinition& definition) {
   build_forces(BuildStage::compensators, context);
   for (const auto& check : context.after_build) check();
   scene.initial_state = scene.system->initial_state(q0, v0);
+  if (definition.initial_static) {
+    scene.equilibrium = solve_static_equilibrium(*scene.system, definition.solver.t_start, scene.initial_state,
+                                                 definition.equilibrium);
+    scene.initial_state = scene.equilibrium->state;
+  }
   check_run_size(definition, scene);
   return scene;
 }

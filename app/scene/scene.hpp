@@ -1,6 +1,7 @@
 #pragma once
 // The runnable scene built from a case: only what the case declares.
 #include <memory>
+#include <optional>
 
 #include "app/case/case_definition.hpp"
 #include "app/scene/element_handles.hpp"
@@ -24,10 +25,14 @@ struct Scene {
   VectorX initial_state;  // y0 = [q0; v0; element states], assembled when there are loops
   Assembly assembly;
   SummarisedElements summarised;  // the elements the run summary reads
+  /// `initial: static`: the static equilibrium the run starts from (initial_state is its
+  /// state; kernel/analysis/static_equilibrium.hpp).
+  std::optional<EquilibriumResult> equilibrium;
 };
 
 /// Builds the model, the force elements and the initial state; assembles closed
-/// loops from the user's approximate state. Throws InputError.
+/// loops from the user's approximate state; with `initial: static`, solves the static
+/// equilibrium from there. Throws InputError (NumericalError: no equilibrium).
 Scene build_scene(const CaseDefinition& definition);
 
 /// "loop joint 'a': rotation about x, ..." for the redundant rows, or "" if none.

@@ -24,6 +24,17 @@ struct Scene;
 /// Loops, rank, redundant equations and assembly of a scene (nothing for a tree).
 void print_loop_summary(const Scene& scene);
 
+struct EquilibriumOptions {
+  std::string case_path;
+  std::string output_path;             // default results/<case name>_equilibrium.h5
+  std::string initial_path;            // --write-initial: YAML fragment of the joints' initial values
+  std::vector<std::string> overrides;  // --set key=value
+  bool quiet = false;
+};
+int equilibrium_command(const EquilibriumOptions& options);
+/// The static equilibrium a scene starts from (`initial: static`): residual, stability.
+void print_equilibrium_summary(const Scene& scene);
+
 int validate_command(const std::vector<std::string>& names, bool list_only);
 
 }  // namespace heavesim

@@ -51,6 +51,7 @@ int run_command(const RunOptions& options) {
   // the file reserves room for every sample.
   Scene scene = build_scene(definition);
   if (!options.quiet) print_loop_summary(scene);
+  if (!options.quiet && scene.equilibrium) print_equilibrium_summary(scene);
   const SolverSettings& solver = definition.solver;
   ResultFile file(output_path, static_cast<hsize_t>(output_sample_count(solver, definition.output.interval)));
   write_result_metadata(file, definition);

@@ -61,6 +61,9 @@ const std::vector<ValidationCheck>& validation_checks() {
       {"H5", "radiation memory: B(w) from K(t), convolution vs state space", check_h5_radiation_memory},
       {"H6", "irregular sea generation: H_m0 of a 3-hour record vs the target", check_h6_irregular_sea},
       {"H7", "WAMIT readers vs the MSS semi numbers, WAMIT's RAO file and the Hulme table", check_h7_bem_readers},
+      {"S1", "static equilibrium of a spring-loaded crane vs the hand moment and force balance", check_s1_spring_crane},
+      {"S2", "static equilibrium of the drilling rig: heave offset, stroke, gas pressure, hook loads vs hand formulas",
+       check_s2_rig_statics},
   };
   return checks;
 }

@@ -86,5 +86,7 @@ std::vector<ValidationRow> check_l3_mksim_slider_crank();
 std::vector<ValidationRow> check_l6_grashof_four_bar();
 std::vector<ValidationRow> check_l7_redundant_four_bar();
 std::vector<ValidationRow> check_l8_driving_torque();
+std::vector<ValidationRow> check_s1_spring_crane();
+std::vector<ValidationRow> check_s2_rig_statics();
 
 }  // namespace heavesim::validation
