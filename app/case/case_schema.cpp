@@ -85,9 +85,10 @@ constexpr KeySpec driver_keys[] = {
     {"name", "text", "–", "required", "unique"},
     {"joint", "text", "–", "required", "the driven joint"},
     {"coordinate", "number", "–", "0", "which of its coordinates"},
-    {"position", "expression", "m or rad", "required", "f(t)"},
-    {"velocity", "expression", "m/s or rad/s", "by differences", "f'(t)"},
-    {"acceleration", "expression", "m/s² or rad/s²", "by differences", "f''(t)"},
+    {"position", "expression", "m or rad", "required (or `table`)", "f(t)"},
+    {"velocity", "expression", "m/s or rad/s", "exact, from `position`", "f'(t)"},
+    {"acceleration", "expression", "m/s² or rad/s²", "exact, from `position`", "f''(t)"},
+    {"table", "text", "–", "none", "CSV file of samples (time s, value) instead of `position`"},
     {"description", "text", "–", "–", "free text"},
 };
 

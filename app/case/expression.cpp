@@ -1,7 +1,10 @@
 #include "app/case/expression.hpp"
 
+#include "app/case/case_functions.hpp"
+
 #include <muParser.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numbers>
@@ -11,15 +14,52 @@
 #include <fmt/format.h>
 
 namespace heavesim {
-namespace {
-double degrees_to_radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-double radians_to_degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
-}  // namespace
+double call_case_function_1(void* entry, double a) {
+  return apply_case_function(static_cast<const CaseFunctionEntry*>(entry)->function, &a, 1);
+}
+double call_case_function_2(void* entry, double a, double b) {
+  const double args[] = {a, b};
+  return apply_case_function(static_cast<const CaseFunctionEntry*>(entry)->function, args, 2);
+}
+double call_case_function_3(void* entry, double a, double b, double c) {
+  const double args[] = {a, b, c};
+  return apply_case_function(static_cast<const CaseFunctionEntry*>(entry)->function, args, 3);
+}
+double call_case_function_5(void* entry, double a, double b, double c, double d, double e) {
+  const double args[] = {a, b, c, d, e};
+  return apply_case_function(static_cast<const CaseFunctionEntry*>(entry)->function, args, 5);
+}
+double call_case_function_n(void* entry, const double* args, int count) {
+  if (count < 1) throw mu::ParserError("too few arguments");
+  return apply_case_function(static_cast<const CaseFunctionEntry*>(entry)->function, args, count);
+}
+double case_unary_minus(double x) { return -x; }
+double case_unary_plus(double x) { return x; }
 
 void define_case_functions(mu::Parser& parser) {
-  parser.DefineFun("deg", degrees_to_radians);
-  parser.DefineFun("rad", radians_to_degrees);
+  // Redefining muParser's built-ins under the same names replaces them (its function
+  // table is a map by name): every function is then one of case_functions.hpp.
+  for (const CaseFunctionEntry& entry : case_function_table) {
+    void* data = const_cast<CaseFunctionEntry*>(&entry);  // muParser's user data is void*; never written
+    switch (entry.arguments) {
+      case 1: parser.DefineFunUserData(entry.name, call_case_function_1, data); break;
+      case 2: parser.DefineFunUserData(entry.name, call_case_function_2, data); break;
+      case 3: parser.DefineFunUserData(entry.name, call_case_function_3, data); break;
+      case 5: parser.DefineFunUserData(entry.name, call_case_function_5, data); break;
+      default: parser.DefineFunUserData(entry.name, call_case_function_n, data); break;
+    }
+  }
+  parser.DefineInfixOprt("-", case_unary_minus);
+  parser.DefineInfixOprt("+", case_unary_plus);
   parser.DefineConst("pi", std::numbers::pi);
+}
+
+std::string parser_error_text(const mu::ParserError& error, const std::string& expression) {
+  std::string message = error.GetMsg();
+  const int position = error.GetPos();
+  if (position >= 0 && message.find("position") == std::string::npos)
+    message += fmt::format(" at position {}", std::min<std::size_t>(position, expression.size()));
+  return message;
 }
 
 namespace {
@@ -99,7 +139,7 @@ double ExpressionContext::evaluate(const std::string& text) const {
     parser_->SetExpr(text);
     value = parser_->Eval();
   } catch (const mu::Parser::exception_type& e) {
-    throw std::invalid_argument(e.GetMsg());
+    throw std::invalid_argument(parser_error_text(e, text));
   }
   if (!std::isfinite(value)) throw std::invalid_argument("the expression does not evaluate to a finite number");
   return value;

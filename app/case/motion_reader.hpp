@@ -1,7 +1,8 @@
 #pragma once
 // Prescribed motions f(t) in a case: the motion keys of a driver (position, velocity,
-// acceleration) read into a TimeFunction, and the checks of every expression of t over
-// the run before it starts (finite everywhere; given derivatives that agree).
+// acceleration; or table) read into a TimeFunction, and the checks of every expression
+// of t over the run before it starts (finite with its derivatives everywhere; given
+// derivatives that agree with the exact ones; tables that cover the run).
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,12 +15,13 @@
 namespace heavesim {
 
 /// The motion of the item (a driver): its `position` expression of t and the optional
-/// `velocity` and `acceleration`. Throws InputError at the key that does not parse.
+/// `velocity` and `acceleration`, or its `table` (a CSV file relative to the file that
+/// holds the key). Throws InputError at the key that does not parse or read.
 std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const std::string& name,
                                                 const ExpressionContext& expressions);
 
 /// Every expression of t in the case -- each driver's motion, each joint torque --
-/// evaluated over the run; a driver's given derivatives compared with its position's.
+/// evaluated over the run; a driver's given derivatives compared with the exact ones.
 /// `drivers` is the case's drivers section (the items in definition.drivers' order).
 void check_motions_over_run(const CaseDefinition& definition, const ExpressionContext& expressions,
                             const std::optional<NodeReader>& drivers);

@@ -2,24 +2,26 @@
 // A prescribed motion written in the case as a muParser expression of time t [s] and
 // the case's parameters ("8 + 3*sin(t)"), with its first two time derivatives.
 //
-// The derivatives are exact when the case gives them as expressions (`velocity`,
-// `acceleration`); otherwise they come from fourth-order central differences with
-// step h = 1e-3 s (Fornberg's stencils): truncation h^4 f^(5)/30 and h^4 f^(6)/90,
-// round-off about 1e-13 |f| / h and 1e-16 |f| / h^2 -- so about 1e-10 relative for
-// motions slower than ~10 rad/s. Give the derivatives where accuracy matters.
-// A value that is not finite during a run is a NumericalError naming the driver.
+// The derivatives are exact: the expression's bytecode is evaluated with second-order
+// Taylor scalars in t (taylor_evaluation.hpp), never by finite differences. When the
+// case gives them as expressions (`velocity`, `acceleration`) those are used; the case
+// reader checks them against the exact ones (motion_reader.hpp).
+// Or a tabulated motion (motion_table.hpp): a spline through samples, derivatives
+// exact for the spline.
+// A value or derivative that is not finite during a run is a NumericalError naming
+// the owner.
 #include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "kernel/model/constraint.hpp"
 
-namespace mu {
-class Parser;
-}
-
 namespace heavesim {
+
+class DifferentiableExpression;
+class MotionTable;
 
 class TimeFunction {
  public:
@@ -29,28 +31,29 @@ class TimeFunction {
   TimeFunction(std::string name, const std::string& position, const std::optional<std::string>& velocity,
                const std::optional<std::string>& acceleration, const std::map<std::string, double>& parameters,
                std::string owner = "driver");
+  /// A tabulated motion.
+  TimeFunction(std::string name, std::shared_ptr<const MotionTable> table, std::string owner = "driver");
   ~TimeFunction();
   TimeFunction(const TimeFunction&) = delete;
   TimeFunction& operator=(const TimeFunction&) = delete;
 
-  /// Step of the central differences that stand in for missing derivatives [s].
-  static constexpr double difference_step = 1e-3;
-
+  /// f(t), f'(t), f''(t) [m, m/s, m/s^2 or rad, rad/s, rad/s^2].
   DriverMotion operator()(double t) const;
 
   /// Position at t, with no derivatives [m or rad].
   double position(double t) const;
   /// Whether the position expression reads t (a constant needs no time dependence).
   bool position_uses_time() const;
+  /// The times it is defined over [s]: a table's first and last; every time for an expression.
+  std::pair<double, double> time_range() const;
 
  private:
-  double evaluate(mu::Parser& parser, double t) const;
+  [[noreturn]] void not_finite(double t, const DifferentiableExpression& expression, const char* what) const;
 
-  std::string name_;                          // the driver's, for diagnoses
-  std::string owner_;                         // "driver", ..., for diagnoses
-  std::map<std::string, double> parameters_;  // node-based: addresses stay valid for muParser
-  mutable double time_ = 0.0;                 // the variable t every parser reads
-  std::unique_ptr<mu::Parser> position_, velocity_, acceleration_;
+  std::string name_;   // the driver's, for diagnoses
+  std::string owner_;  // "driver", ..., for diagnoses
+  std::unique_ptr<DifferentiableExpression> position_, velocity_, acceleration_;  // null for a table
+  std::shared_ptr<const MotionTable> table_;                                      // null for an expression
 };
 
 }  // namespace heavesim

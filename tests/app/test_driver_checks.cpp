@@ -1,6 +1,6 @@
 // The checks a driver's expressions pass before a run: explicit derivatives must be the
-// derivatives of the position to within the central differences' own error (a true
-// value of 0 included), and every expression of t must be finite over the run.
+// exact derivatives of the position to within round-off (1e-9 of their scale over the
+// run, a true value of 0 included), and every expression of t must be finite over the run.
 #include <gtest/gtest.h>
 
 #include <filesystem>
