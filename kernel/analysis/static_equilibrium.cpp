@@ -5,6 +5,10 @@
 #include <cstdio>
 #include <numeric>
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+#include <Eigen/SVD>
+
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
@@ -17,7 +21,7 @@ namespace {
 
 std::string format_number(const char* format, double value) {
   char buffer[64];
-  std::snprintf(buffer, sizeof buffer, format, value);
+  std::snprintf(buffer, sizeof buffer, format, value + 0.0);  // + 0.0: no "-0"
   return buffer;
 }
 
@@ -42,6 +46,7 @@ class EquilibriumProblem {
     std::iota(rows_.begin(), rows_.end(), 0);
     zero_acceleration_ = VectorX::Zero(nv_);
     lambda_ = VectorX::Zero(m_);
+    q_work_.resize(nq_);  // integrate_configuration writes into a sized vector
   }
 
   /// The element states whose rates depend on neither q nor z at rest have no rest
@@ -94,7 +99,9 @@ class EquilibriumProblem {
     Residuals at_zero;
     evaluate(at_zero);
     const MatrixX jt = system_.data().constraint_jacobian.transpose();
-    lambda_ = Eigen::CompleteOrthogonalDecomposition<MatrixX>(jt).solve(at_zero.force);
+    Eigen::CompleteOrthogonalDecomposition<MatrixX> solver(jt.rows(), jt.cols());
+    solver.setThreshold(constraint_rank_threshold);  // redundant rows get no share (projection.hpp)
+    lambda_ = solver.compute(jt).solve(at_zero.force);
   }
 
   void differentiate() {
@@ -237,8 +244,10 @@ EquilibriumResult solve_static_equilibrium(MultibodySystem& system, double t, co
     a.topRows(nv) /= load_scale;
     equilibrate(a, row_scale, column_scale);
     const MatrixX scaled = row_scale.asDiagonal() * a * column_scale.asDiagonal();
-    Eigen::CompleteOrthogonalDecomposition<MatrixX> solver(scaled);
+    // The threshold decides the rank when the decomposition is computed: set it first.
+    Eigen::CompleteOrthogonalDecomposition<MatrixX> solver(n, n);
     solver.setThreshold(1e-10);
+    solver.compute(scaled);
     step = column_scale.asDiagonal() * solver.solve(row_scale.asDiagonal() * rhs);
     // What the linearised step leaves of the residual: a part no step can remove (outside
     // the range) is a load nothing resists, or constraints that contradict each other.
@@ -250,14 +259,13 @@ EquilibriumResult solve_static_equilibrium(MultibodySystem& system, double t, co
       if (worst < nv) {
         const Data& data = system.data();
         const Vector3 force_world = data.motion_subspace_world.col(worst).tail<3>() * -residual.force[worst];
+        const bool translation = data.motion_subspace_world.col(worst).head<3>().norm() == 0.0;
         throw NumericalError(
             t,
             "no static equilibrium: nothing resists the load along " +
                 describe_velocity_coordinate(model, data, worst) + " (unbalanced generalized force " +
-                format_number("%.4g", -residual.force[worst]) + " N or N m" +
-                (data.motion_subspace_world.col(worst).head<3>().norm() == 0.0
-                     ? ", world force " + format_direction(force_world) + " N"
-                     : std::string()) +
+                format_number("%.4g", -residual.force[worst]) +
+                (translation ? " N, world force " + format_direction(force_world) + " N" : std::string(" N m")) +
                 ")",
             "add what holds that direction (hydrostatics, a mooring, a spring, a joint or a driver), or run the case "
             "from its given initial state (initial: given)");

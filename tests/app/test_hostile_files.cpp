@@ -5,6 +5,8 @@
 // Every command runs under `timeout 10`, so a regression that blocks shows as exit 124
 // instead of a hung suite.
 #include <gtest/gtest.h>
+
+#include <cmath>
 #include <sys/stat.h>
 #include <unistd.h>
 
