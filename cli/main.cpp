@@ -27,6 +27,17 @@ int main(int argc, char** argv) {
       "run a case beyond the run-size limits (2 GiB of output, 1e9 steps; docs/case-format.md)";
   run->add_flag("--allow-large-runs", run_options.allow_large_runs, allow_large_help);
 
+  RunOptions kinematics_options;
+  CLI::App* kinematics = app.add_subcommand(
+      "kinematics", "kinematic analysis of a driven mechanism: positions, velocities, accelerations, driver forces");
+  kinematics->add_option("case", kinematics_options.case_path, "case file (YAML)")->required();
+  kinematics->add_option("-o,--output", kinematics_options.output_path, "result file (default results/<case name>.h5)");
+  kinematics->add_option("--csv", kinematics_options.csv_directory, "also write <case name>.csv into this directory");
+  kinematics->add_option("--set", kinematics_options.overrides, "override a case value: key.path=value (repeatable)")
+      ->allow_extra_args(false);
+  kinematics->add_flag("-q,--quiet", kinematics_options.quiet, "no progress line and no summary");
+  kinematics->add_flag("--allow-large-runs", kinematics_options.allow_large_runs, allow_large_help);
+
   std::string check_path;
   std::vector<std::string> check_overrides;
   CLI::App* check = app.add_subcommand("check", "load and check a case without running it; print the model");
@@ -55,6 +66,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*run) return run_command(run_options);
+    if (*kinematics) return kinematics_command(kinematics_options);
     if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
     if (*validate) return validate_command(validation_names, list_only);
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);

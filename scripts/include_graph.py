@@ -41,6 +41,7 @@ KERNEL_LAYERS = [
     ("kernel/elements",),
     ("kernel/system",),
     ("kernel/integrators",),
+    ("kernel/analysis",),
 ]
 # Constructs that must not appear in a folder: (folder prefixes, regex, why).
 FORBIDDEN = [

@@ -11,6 +11,7 @@
 #include "app/case/input_error.hpp"
 #include "app/forces/force_kinds.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
+#include "kernel/analysis/kinematic_analysis.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "kernel/parameter_error.hpp"
@@ -93,6 +94,7 @@ struct CaseDefinition {
   std::map<std::string, JointInitialState> initial_states;  // by joint name
   SolverSettings solver;
   OutputSettings output;
+  KinematicSettings kinematics;  // the `kinematics` section (heavesim kinematics)
   RunLimits limits;
 
   /// Where every key of the resolved case came from, by key path ("joints[2].axis",

@@ -471,6 +471,29 @@ void read_output(const std::optional<NodeReader>& reader, const NodeReader& solv
   }
 }
 
+/// The `kinematics` section: the settings of a kinematic analysis (kinematic_analysis.hpp).
+void read_kinematics(const NodeReader& reader, KinematicSettings& settings) {
+  reader.expect_section("kinematics");
+  for (const char* key : {"equation_tolerance", "solution_tolerance"}) {
+    const std::optional<NodeReader> tolerance = reader.optional(key);
+    if (!tolerance) continue;
+    const double value = tolerance->positive_number();
+    if (value < 1e-14) tolerance->fail("a tolerance below round-off of the constraint equations", ">= 1e-14");
+    (std::string(key) == "equation_tolerance" ? settings.equation_tolerance : settings.solution_tolerance) = value;
+  }
+  if (auto iterations = reader.optional("max_iterations")) {
+    const long value = iterations->integer();
+    if (value < 1 || value > 1000) iterations->fail(fmt::format("{}", value), "a whole number from 1 to 1000");
+    settings.max_iterations = static_cast<int>(value);
+  }
+  if (auto weighting = reader.optional("weighting"))
+    settings.weighting = weighting->choice({"mass", "unit"}) == "mass" ? MotionWeighting::mass : MotionWeighting::unit;
+  if (auto ratio = reader.optional("singular_ratio")) {
+    settings.singular_ratio = ratio->positive_number();
+    if (settings.singular_ratio >= 1.0) ratio->fail(fmt::format("{:g}", settings.singular_ratio), "0 < singular_ratio < 1");
+  }
+}
+
 /// Every key's position by key path, in the reader's spelling (a.b, a[2].c).
 void record_sources(const CaseNode& node, const std::string& path, std::map<std::string, SourceLocation>& sources) {
   if (!path.empty()) sources[path] = node.location;
@@ -533,6 +556,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   read_solver(root["solver"], definition);
   read_output(root.optional("output"), root["solver"], definition);
+  if (auto section = root.optional("kinematics")) read_kinematics(*section, definition.kinematics);
   check_motions_over_run(definition, expressions, root.optional("drivers"));
   return definition;
 }

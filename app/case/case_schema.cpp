@@ -25,6 +25,7 @@ constexpr KeySpec root_keys[] = {
     {"forces", "list", "–", "none", "force elements"},
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
+    {"kinematics", "map", "–", "see below", "settings of `heavesim kinematics`"},
 };
 
 constexpr KeySpec environment_keys[] = {
@@ -102,6 +103,14 @@ constexpr KeySpec output_keys[] = {
     {"interval", "number", "s", "min(0.01, duration/100)", "time between samples"},
     {"channels", "list", "–", "all", "bodies, joints, reactions, energy, forces"},
     {"evaluate_after", "number", "s", "t_start + duration/2", "start of the summary window"},
+};
+
+constexpr KeySpec kinematics_keys[] = {
+    {"equation_tolerance", "number", "m or rad", "1e-10", "largest max |Phi| accepted at a time point"},
+    {"solution_tolerance", "number", "m or rad", "1e-10", "largest max |dq| of the last Newton step accepted"},
+    {"max_iterations", "number", "–", "25", "Newton iterations per time point"},
+    {"weighting", "choice", "–", "`mass`", "mass or unit: the metric of the minimum-norm motion"},
+    {"singular_ratio", "number", "–", "1e-8", "smallest/largest singular value of J reported as singular"},
 };
 
 constexpr KeySpec distance_keys[] = {
@@ -194,6 +203,7 @@ constexpr SchemaSection fixed_sections[] = {
     {"drivers[i]", driver_keys},
     {"solver", solver_keys},
     {"output", output_keys},
+    {"kinematics", kinematics_keys},
 };
 
 bool in_form(std::string_view forms, std::string_view form) {

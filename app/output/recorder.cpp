@@ -39,12 +39,15 @@ std::string speed_units(const JointType& type, const std::string& per) {
 
 }  // namespace
 
-Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv)
+Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
+                   const std::vector<ExtraChannel>& extra_channels)
     : scene_(scene),
       file_(file),
       csv_(csv),
       compensators_(*scene.system, scene.summarised, definition.output.evaluate_after) {
   define_channels(definition);
+  for (const ExtraChannel& extra : extra_channels)
+    add({extra.path, 0, extra.units, extra.description, {}, [value = extra.value](double, double* out) { out[0] = value(); }});
   if (file_) {
     // HDF5 lists groups alphabetically; keep the model's (topological) order too.
     const Model& model = *scene_.model;
@@ -225,8 +228,12 @@ void Recorder::define_element_channels() {
 }
 
 void Recorder::record(double t, const VectorX& y) {
+  scene_.system->evaluate(t, y, needs_reactions_);
+  record_evaluation(t, y);
+}
+
+void Recorder::record_evaluation(double t, const VectorX& y) {
   MultibodySystem& system = *scene_.system;
-  system.evaluate(t, y, needs_reactions_);
   // Everything below reads the stages of this one evaluation; require_stages catches a
   // read after something evaluated the system again (a stale read).
   const long evaluation = system.data().stages.evaluation;

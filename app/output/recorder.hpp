@@ -17,11 +17,26 @@ namespace heavesim {
 
 class Recorder {
  public:
+  /// A scalar series a command adds to the case's channels (e.g. /kinematics/...): its
+  /// value at each sample is read from `value`.
+  struct ExtraChannel {
+    std::string path;
+    std::string units;
+    std::string description;
+    std::function<double()> value;
+  };
   /// `file` and `csv` may be null (not written).
-  Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv);
+  Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
+           const std::vector<ExtraChannel>& extra_channels = {});
 
   /// Evaluates the scene at (t, y) and records one sample of every channel.
   void record(double t, const VectorX& y);
+  /// Records one sample of the system's current evaluation at (t, y), made by the caller
+  /// (a kinematic analysis: MultibodySystem::evaluate_prescribed, with reactions when
+  /// needs_reactions()).
+  void record_evaluation(double t, const VectorX& y);
+  /// Whether the channels read joint wrenches (an evaluation must compute reactions).
+  bool needs_reactions() const { return needs_reactions_; }
   /// Writes per-channel statistics as dataset attributes and the /summary group.
   void finish();
 

@@ -7,6 +7,7 @@
 
 #include "app/scene/scene_build_context.hpp"
 #include "kernel/algorithms/kinematics.hpp"
+#include "kernel/analysis/kinematic_analysis.hpp"
 
 namespace heavesim {
 namespace {
@@ -22,6 +23,36 @@ void build_forces(BuildStage stage, SceneBuildContext& context) {
         force.kind);
 }
 
+/// An over-driven mechanism, found where assembly failed: a dependent group of rows with
+/// a driver among them whose residuals disagree (inconsistent_rows). Reported at the
+/// driver declared last in the group, naming the rows it fights; nothing when no such
+/// group holds a driver.
+void reject_over_driven(const CaseDefinition& definition, const Model& model, Data& data) {
+  for (const InconsistentRows& group : inconsistent_rows(model, data, definition.solver.integrator.constraint_tolerance)) {
+    std::vector<int> rows = group.rows;
+    rows.push_back(group.dependent);
+    const Constraint* driver = nullptr;
+    for (const int row : rows) {
+      const Constraint* constraint = constraint_of_row(model, row);
+      if (constraint && std::holds_alternative<DriverConstraint>(constraint->kind) &&
+          (!driver || constraint->first_row > driver->first_row))
+        driver = constraint;
+    }
+    if (!driver) continue;
+    std::string fought;
+    for (const int row : rows)
+      if (constraint_of_row(model, row) != driver)
+        fought += (fought.empty() ? "" : ", ") + describe_constraint_row(model, row);
+    throw definition.item_error(
+        driver->name, "name",
+        fmt::format("an over-driven mechanism: driver '{}' prescribes a coordinate that {} already fix(es), to a "
+                    "different value (mismatch {:.3g} m or rad at t = {:g} s)",
+                    driver->name, fought, std::abs(group.mismatch), definition.solver.t_start),
+        "drivers only on free directions: remove this driver or the one it fights, or drive another coordinate "
+        "(`heavesim kinematics` prints the free directions)");
+  }
+}
+
 /// Newton iterations from the user's state onto Phi = 0, J v = 0 (projection.hpp).
 /// A state that does not assemble is bad input: the loop cannot close there.
 Assembly assemble(const CaseDefinition& definition, const Model& model, Data& data, VectorX& q, VectorX& v) {
@@ -32,6 +63,7 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
   assembly.newton_iterations = result.iterations;
   assembly.position_residual = result.position_residual;
   if (!result.converged) {
+    reject_over_driven(definition, model, data);
     int worst = 0;
     data.constraint_residual.cwiseAbs().maxCoeff(&worst);
     const std::string row = describe_constraint_row(model, worst);

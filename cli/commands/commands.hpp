@@ -16,6 +16,8 @@ struct RunOptions {
 };
 
 int run_command(const RunOptions& options);
+/// heavesim kinematics: kinematic analysis over the case's time span (same options as run).
+int kinematics_command(const RunOptions& options);
 int check_command(const std::string& case_path, const std::vector<std::string>& overrides,
                   bool allow_large_runs = false);
 struct Scene;

@@ -12,6 +12,7 @@
 
 #include "app/case/case_definition.hpp"
 #include "cli/commands/commands.hpp"
+#include "cli/commands/command_support.hpp"
 #include "cli/commands/result_metadata.hpp"
 #include "app/output/output_error.hpp"
 #include "app/output/recorder.hpp"
@@ -22,83 +23,6 @@
 
 namespace heavesim {
 namespace {
-
-std::atomic<int> stop_signal{0};
-extern "C" void request_stop(int signal) { stop_signal = signal; }
-
-/// Progress on stderr (simulated time, wall time, ETA) once a run takes over 1 s.
-class ProgressLine {
- public:
-  ProgressLine(double t_start, double t_end, bool enabled)
-      : t_start_(t_start), t_end_(t_end), enabled_(enabled && isatty(STDERR_FILENO)),
-        start_(std::chrono::steady_clock::now()) {}
-  void update(double t) {
-    if (!enabled_) return;
-    const double wall = elapsed();
-    if (wall < 1.0 || wall - last_shown_ < 0.2) return;
-    last_shown_ = wall;
-    const double fraction = (t - t_start_) / (t_end_ - t_start_);
-    const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : 0.0;
-    fmt::print(stderr, "\r  t = {:.2f} / {:.2f} s   wall {:.1f} s   ETA {:.1f} s   ", t, t_end_, wall, eta);
-    shown_ = true;
-  }
-  void clear() {
-    if (shown_) fmt::print(stderr, "\r{:60}\r", "");
-  }
-  double elapsed() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  double t_start_, t_end_;
-  bool enabled_;
-  std::chrono::steady_clock::time_point start_;
-  double last_shown_ = 0.0;
-  bool shown_ = false;
-};
-
-/// SIGINT and SIGTERM ask the run to stop (it then closes its file, complete = 0) from
-/// the first instruction of `run` on: a signal while the case loads or the scene is built
-/// stops before the run, with nothing written. SIGXFSZ is ignored so that a file growing
-/// past the file-size limit (ulimit -f) fails its write with EFBIG, reported like a full
-/// disk, instead of killing the process. The previous dispositions come back at the end.
-class StopSignals {
- public:
-  StopSignals() {
-    stop_signal = 0;
-    previous_int_ = std::signal(SIGINT, request_stop);
-    previous_term_ = std::signal(SIGTERM, request_stop);
-    previous_file_size_ = std::signal(SIGXFSZ, SIG_IGN);
-  }
-  ~StopSignals() {
-    std::signal(SIGINT, previous_int_);
-    std::signal(SIGTERM, previous_term_);
-    std::signal(SIGXFSZ, previous_file_size_);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-  static int received() { return stop_signal; }
-
- private:
-  void (*previous_int_)(int) = SIG_DFL;
-  void (*previous_term_)(int) = SIG_DFL;
-  void (*previous_file_size_)(int) = SIG_DFL;
-};
-
-int stopped_before_the_run(const std::string& case_name) {
-  fmt::print(stderr, "heavesim: stopped by signal {} before the run of case '{}' started; no result file written\n",
-             StopSignals::received(), case_name);
-  return 1;
-}
-
-/// The directory of `path`, created if missing; an OutputError (exit 1) if it cannot be.
-void create_parent_directory(const std::string& path, const char* what) {
-  const std::filesystem::path directory = std::filesystem::path(path).parent_path();
-  if (directory.empty()) return;
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error) throw OutputError(directory.string(), std::string("cannot create the directory for the ") + what, error.message());
-}
 
 /// A run that stopped before t_end (signal, numerical failure, a CSV that could not be
 /// written): statistics and run summary written, complete = 0, file closed.

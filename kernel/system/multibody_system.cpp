@@ -10,7 +10,9 @@
 #include "kernel/algorithms/configuration.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
+#include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/algorithms/mass_matrix.hpp"
 #include "kernel/algorithms/projection.hpp"
 
 namespace heavesim {
@@ -26,7 +28,8 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
       v_(VectorX::Zero(model_->nv)),
       tau_total_(VectorX::Zero(model_->nv)),
       constraint_force_(VectorX::Zero(model_->nv)),
-      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)) {
+      kkt_mismatch_(VectorX::Zero(model_->num_constraint_rows)),
+      dynamic_residual_(VectorX::Zero(model_->nv)) {
   bool joint_elements = false;
   for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
   applied_dependencies_ = {false, joint_elements, joint_elements, false};
@@ -165,6 +168,39 @@ void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reaction
     add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
   }
   compute_joint_wrenches(*model_, data_, total_loads_);
+}
+
+void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const VectorX& qdd, bool compute_reactions) {
+  const Model& model = *model_;
+  compute_stages_and_forces(t, y);
+  // f = M qdd + C - tau: RNEA with the applied external forces and gravity, less the
+  // applied joint forces. Its accelerations are those of the motion: the stage is current.
+  inverse_dynamics(model, data_, qdd, forces_.external_force_world);
+  data_.qdd = qdd;
+  data_.stages.accelerations_computed();
+  dynamic_residual_ = data_.tau - forces_.joint_force;
+  if (model.has_constraints()) {
+    // lambda = S^+ J M^-1 f, S = J M^-1 J^T: the normal equations of min |J^T lambda - f|
+    // in the metric M^-1; for a dynamically consistent motion (f in the range of J^T) the
+    // exact multipliers of the KKT system (constrained_dynamics.hpp).
+    constraint_jacobian(model, data_, data_.constraint_jacobian);
+    data_.mass_matrix_cholesky.compute(mass_matrix(model, data_));
+    data_.kkt_minv_jt = data_.constraint_jacobian.transpose();
+    data_.mass_matrix_cholesky.solveInPlace(data_.kkt_minv_jt);
+    data_.kkt_schur.noalias() = data_.constraint_jacobian * data_.kkt_minv_jt;
+    data_.kkt_rhs.noalias() = data_.kkt_minv_jt.transpose() * dynamic_residual_;
+    data_.kkt_solver.compute(data_.kkt_schur, kkt_regularization);
+    data_.kkt_solver.solve(data_.kkt_rhs, data_.constraint_multipliers);
+    dynamic_residual_.noalias() -= data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
+  }
+  if (!data_.constraint_multipliers.allFinite()) report_non_finite(t, dynamic_residual_, "constraint force");
+  if (!compute_reactions) return;
+  total_loads_ = forces_.external_force_world;
+  if (model.has_constraints()) {
+    tau_total_ = forces_.joint_force;
+    add_constraint_loads(model, data_, data_.constraint_multipliers, total_loads_, tau_total_);
+  }
+  compute_joint_wrenches(model, data_, total_loads_);
 }
 
 std::string MultibodySystem::describe_state_component(int index) const {

@@ -50,6 +50,19 @@ class MultibodySystem {
   /// multipliers and, when asked, the joint wrenches (loop forces included).
   void evaluate(double t, const VectorX& y, bool compute_reactions);
 
+  /// Inverse dynamics along a prescribed motion (kinematic analysis, no integration):
+  /// stages and applied forces at (t, y = [q; v; z]) with the accelerations `qdd` (nv)
+  /// given, and the multipliers that best explain them,
+  ///   J^T lambda = M qdd + C - tau   (tau: applied joint, gravity and external forces),
+  /// least squares in the metric M^-1 (lambda = (J M^-1 J^T)^+ J M^-1 (M qdd + C - tau),
+  /// minimum-norm over redundant rows: the multipliers a dynamic run reports for the same
+  /// motion). The generalized force the constraints cannot supply (nonzero only along
+  /// directions no constraint or driver holds) is kept as dynamic_residual(). With
+  /// `compute_reactions`, the joint wrenches too.
+  void evaluate_prescribed(double t, const VectorX& y, const VectorX& qdd, bool compute_reactions);
+  /// M qdd + C - tau - J^T lambda (nv; N or N m) of the last evaluate_prescribed.
+  const VectorX& dynamic_residual() const { return dynamic_residual_; }
+
   // --- evaluation stages, used by the forms ---
   /// ydot = f(t, y) of the ODE above (leaves every stage, the forces and qdd at (t, y)).
   void state_derivative(double t, const VectorX& y, VectorX& ydot);
@@ -122,7 +135,7 @@ class MultibodySystem {
   ElementDependencies applied_dependencies_;
   int size_;
   int constraint_rank_ = -1;
-  VectorX q_, v_, tau_total_, constraint_force_, kkt_mismatch_;
+  VectorX q_, v_, tau_total_, constraint_force_, kkt_mismatch_, dynamic_residual_;
 };
 
 }  // namespace heavesim

@@ -13,6 +13,7 @@
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/analysis/kinematic_analysis.hpp"
 #include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/integrator.hpp"
@@ -152,6 +153,31 @@ TEST(NoMalloc, ClosedLoopExplicitPathDoesNotAllocate) {
   ForbidAllocation forbid;
   EXPECT_NO_THROW(ode.derivative(0.0, four_bar.y, ydot));
   EXPECT_NO_THROW(ode.project(0.0, four_bar.y));
+}
+
+TEST(NoMalloc, KinematicTimePointDoesNotAllocate) {
+  // The kinematic analysis of one time point (predictor, Newton with line search and the
+  // pivoted-QR minimum-norm solves in the mass and unit metrics, the singular values)
+  // and the inverse dynamics of the prescribed motion, on a four-bar with redundant rows.
+  StrutFourBar four_bar;
+  const Model& model = four_bar.system.model();
+  Data& data = four_bar.system.mutable_data();
+  for (const MotionWeighting weighting : {MotionWeighting::mass, MotionWeighting::unit}) {
+    KinematicSettings settings;
+    settings.weighting = weighting;
+    KinematicWorkspace workspace(model);
+    VectorX q = four_bar.y.head(model.nq), v = VectorX::Zero(model.nv), a = VectorX::Zero(model.nv);
+    VectorX y = four_bar.y;
+    analyse_time_point(model, data, workspace, settings, 0.0, 0.0, q, v, a);  // sizes Eigen's internals
+    ForbidAllocation forbid;
+    EXPECT_NO_THROW({
+      const KinematicPoint point = analyse_time_point(model, data, workspace, settings, 0.01, 0.01, q, v, a);
+      EXPECT_TRUE(point.converged);
+      y.head(model.nq) = q;
+      y.segment(model.nq, model.nv) = v;
+      four_bar.system.evaluate_prescribed(0.01, y, a, true);
+    });
+  }
 }
 
 TEST(NoMalloc, HhtStepsDoNotAllocate) {

@@ -25,6 +25,7 @@ INSTANTIATE_TEST_SUITE_P(Compensators, ValidationSuite, ::testing::Values("C1", 
 // A02 is left out of CTest for its run time (N = 40 for 20 s: ~40 s in Release, far more
 // under the sanitizers); `heavesim validate` runs it, and CI runs that.
 INSTANTIATE_TEST_SUITE_P(Benchmarks, ValidationSuite, ::testing::Values("A01", "A03", "A04", "A05", "L5"));
+INSTANTIATE_TEST_SUITE_P(Kinematics, ValidationSuite, ::testing::Values("L3", "L6", "L7", "L8"));
 INSTANTIATE_TEST_SUITE_P(Hydro, ValidationSuite, ::testing::Values("H1", "H2", "H3", "H4", "H5", "H6", "H7"));
 
 }  // namespace

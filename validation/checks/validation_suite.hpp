@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "app/run/kinematic_run.hpp"
 #include "app/run/simulation_run.hpp"
 
 namespace heavesim::validation {
@@ -48,6 +49,11 @@ std::vector<ValidationRow> assembly_structure_rows(const std::string& id, const 
                                                    const std::string& relative_path, int expected_redundant,
                                                    int expected_mobility);
 
+/// Loads a case and runs its kinematic analysis (app/run/kinematic_run.hpp, reactions
+/// included); `sample(t, system)` after each time point's evaluation.
+KinematicOutcome run_kinematic_case(const std::string& relative_path, const std::vector<std::string>& overrides,
+                                    const std::function<void(double t, const MultibodySystem& system)>& sample);
+
 /// Kinetic plus gravitational energy at the system's last evaluation [J].
 double mechanical_energy(const MultibodySystem& system);
 
@@ -76,5 +82,9 @@ std::vector<ValidationRow> check_h4_regular_wave_rao();
 std::vector<ValidationRow> check_h5_radiation_memory();
 std::vector<ValidationRow> check_h6_irregular_sea();
 std::vector<ValidationRow> check_h7_bem_readers();
+std::vector<ValidationRow> check_l3_mksim_slider_crank();
+std::vector<ValidationRow> check_l6_grashof_four_bar();
+std::vector<ValidationRow> check_l7_redundant_four_bar();
+std::vector<ValidationRow> check_l8_driving_torque();
 
 }  // namespace heavesim::validation
