@@ -67,9 +67,9 @@ TEST(MksimImport, CommittedSliderCrankCaseEqualsAFreshImport) {
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const std::string fresh = read_text(output);
   std::filesystem::remove(output);
-  EXPECT_EQ(fresh, read_text(testing::source_path("cases/kinematics/mksim_slider_crank.yaml")))
+  EXPECT_EQ(fresh, read_text(testing::source_path("cases/kinematics/mksim_slider_crank_imported.yaml")))
       << "re-import: heavesim import-mksim cases/kinematics/mksim_slider_crank.mks -o "
-         "cases/kinematics/mksim_slider_crank.yaml";
+         "cases/kinematics/mksim_slider_crank_imported.yaml";
 }
 
 TEST(MksimImport, EveryJointTypeIsAssembledWhereTheModelPlacesItsBodies) {
@@ -153,7 +153,7 @@ TEST(MksimImport, SliderCrankKinematicsFollowsTheDriverAndHoldsTheRodSpinAtZero)
   const std::string output = temporary("mksim_slider_crank.h5");
   const testing::CommandResult result = testing::run_command_line(
       testing::heavesim_binary() + " kinematics " +
-      testing::source_path("cases/kinematics/mksim_slider_crank.yaml") + " -q -o " + output);
+      testing::source_path("cases/kinematics/mksim_slider_crank_imported.yaml") + " -q -o " + output);
   ASSERT_EQ(result.exit_code, 0) << result.output;
   const H5File file(output);
   ASSERT_TRUE(file.ok());

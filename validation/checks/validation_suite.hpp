@@ -86,5 +86,6 @@ std::vector<ValidationRow> check_l3_mksim_slider_crank();
 std::vector<ValidationRow> check_l6_grashof_four_bar();
 std::vector<ValidationRow> check_l7_redundant_four_bar();
 std::vector<ValidationRow> check_l8_driving_torque();
+std::vector<ValidationRow> check_m1_mksim_import();
 
 }  // namespace heavesim::validation
