@@ -64,6 +64,11 @@ int main(int argc, char** argv) {
   validate->add_option("names", validation_names, "checks to run (e.g. K1 K3); default all");
   validate->add_flag("--list", list_only, "list the checks without running them");
 
+  std::string mksim_path, mksim_case_path;
+  CLI::App* import_mksim = app.add_subcommand("import-mksim", "write an MKSim model (.mks) as a heavesim case");
+  import_mksim->add_option("model", mksim_path, "MKSim model file")->required();
+  import_mksim->add_option("-o,--output", mksim_case_path, "case file to write (YAML)")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -76,6 +81,7 @@ int main(int argc, char** argv) {
     if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
     if (*equilibrium) return equilibrium_command(equilibrium_options);
     if (*validate) return validate_command(validation_names, list_only);
+    if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
     return 2;

@@ -34,7 +34,11 @@ std::shared_ptr<const Model> tethered_slider_pendulum() {
   builder.add_joint(joint_definition("rail", JointKind::prismatic, "ground", "slider", Vector3::UnitX()));
   builder.add_joint(joint_definition("pin", JointKind::revolute, "slider", "rod", Vector3::UnitY()));
   builder.add_distance_constraint({"tether", "ground", "rod", Vector3::Zero(), Vector3(0, 0, -1), 1.0});
-  builder.add_driver({"push", "rail", 0, [](double t) { return DriverMotion{1.0 + t, 1.0, 0.0}; }});
+  DriverDefinition push;
+  push.name = "push";
+  push.joint = "rail";
+  push.motion = [](double t) { return DriverMotion{1.0 + t, 1.0, 0.0}; };
+  builder.add_driver(push);
   return std::make_shared<const Model>(builder.build());
 }
 

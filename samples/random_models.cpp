@@ -90,10 +90,47 @@ Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options) {
                                      random_vector(random, 0.3), random_vector(random, 0.3), 1.3});
     builder.add_coupler({"gear", "joint1", options.bodies > 8 ? "joint8" : "joint2", -0.7, 0.2});
     // joint3 is cylindrical (kinds[3]): prescribe its translation.
-    builder.add_driver({"push", "joint3", 1, [](double t) {
-                          return DriverMotion{0.2 * std::sin(1.3 * t) + 0.1 * t * t, 0.26 * std::cos(1.3 * t) + 0.2 * t,
-                                              -0.338 * std::sin(1.3 * t) + 0.2};
-                        }});
+    DriverDefinition push;
+    push.name = "push";
+    push.joint = "joint3";
+    push.coordinate = 1;
+    push.motion = [](double t) {
+      return DriverMotion{0.2 * std::sin(1.3 * t) + 0.1 * t * t, 0.26 * std::cos(1.3 * t) + 0.2 * t,
+                          -0.338 * std::sin(1.3 * t) + 0.2};
+    };
+    builder.add_driver(push);
+    // The drivers on frames, at fixed points and frames (no draws: the random sequence
+    // of the tree and of the states drawn after it stays as it was).
+    DriverDefinition slide;
+    slide.name = "slide";
+    slide.motion = [](double t) {
+      return DriverMotion{0.5 + 0.3 * std::sin(0.9 * t), 0.27 * std::cos(0.9 * t), -0.243 * std::sin(0.9 * t)};
+    };
+    slide.kind = DriverKind::absolute;
+    slide.body_b = "body2";
+    slide.X_body_b_frame = Transform::from_translation(Vector3(0.1, -0.2, 0.3));
+    slide.direction = Vector3(1.0, 2.0, 2.0) / 3.0;
+    builder.add_driver(slide);
+    DriverDefinition stretch;
+    stretch.name = "stretch";
+    stretch.motion = [](double t) { return DriverMotion{1.1 + 0.2 * t * t, 0.4 * t, 0.4}; };
+    stretch.kind = DriverKind::distance;
+    stretch.body_a = "ground";
+    stretch.X_body_a_frame = Transform::from_translation(Vector3(0.2, 0.1, 0.0));
+    stretch.body_b = "body" + std::to_string(options.bodies - 1);
+    stretch.X_body_b_frame = Transform::from_translation(Vector3(0.0, 0.1, -0.2));
+    builder.add_driver(stretch);
+    DriverDefinition twist;
+    twist.name = "twist";
+    twist.motion = [](double t) { return DriverMotion{0.7 * t + 0.3 * std::sin(t), 0.7 + 0.3 * std::cos(t), -0.3 * std::sin(t)}; };
+    twist.kind = DriverKind::angle;
+    twist.body_a = "body1";
+    twist.X_body_a_frame =
+        Transform(Eigen::AngleAxisd(0.4, Vector3(1.0, 1.0, 0.0).normalized()).toRotationMatrix(), Vector3(0.1, 0.0, 0.0));
+    twist.body_b = "body" + std::to_string(options.bodies - 2);
+    twist.X_body_b_frame =
+        Transform(Eigen::AngleAxisd(-0.7, Vector3(0.0, 1.0, 2.0).normalized()).toRotationMatrix(), Vector3::Zero());
+    builder.add_driver(twist);
   }
   return builder.build();
 }

@@ -20,11 +20,13 @@ struct RandomTreeOptions {
   bool joint_springs = true;   // springs/dampers on scalar joints
   bool chain = false;          // a serial chain instead of a random tree
   bool only_revolute = false;  // all joints revolute (benchmark chains)
-  bool constraints = false;    // also loop joints of every kind, a distance, a coupler and a driver
+  bool constraints = false;    // also loop joints of every kind, a distance, a coupler and the drivers
 };
 
 /// Draws the tree (and, with `options.constraints`, six loop joints, the distance
-/// constraint "rod", the coupler "gear" and the driver "push" on joint3) from `random`.
+/// constraint "rod", the coupler "gear", the joint driver "push" on joint3, the absolute
+/// driver "slide" on body2, the distance driver "stretch" from ground to the last body
+/// and the angle driver "twist" from body1 to the last but one) from `random`.
 Model random_tree(std::mt19937_64& random, const RandomTreeOptions& options);
 
 /// A state for `model`: q = neutral + a tangent displacement with entries in

@@ -4,7 +4,7 @@
 # bounded time from a seed corpus gathered from the project's own cases and data files.
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 #     SECONDS_PER_TARGET  default 60
-#     TARGET              fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine (default all)
+#     TARGET              fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine fuzz_mksim (default all)
 # Prints per target the executions, libFuzzer's final coverage (cov: edges, ft: features)
 # and the findings (crash, unexpected exception, leak, timeout, out-of-memory: saved under
 # build-fuzz/work/<target>/findings/; each target fuzzes its whole budget past findings).
@@ -16,7 +16,7 @@ cd "$(dirname "$0")/.."
 source_dir=$PWD
 seconds=${1:-60}
 shift || true
-all_targets=(fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine)
+all_targets=(fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine fuzz_mksim)
 targets=("$@")
 ((${#targets[@]} > 0)) || targets=("${all_targets[@]}")
 build_dir=build-fuzz
@@ -49,6 +49,7 @@ gather_seeds() {
     fuzz_wamit) mapfile -t files < <(find data tests/bem tests/bad_bem -regex '.*\.\(1\|3\|hst\)') ;;
     fuzz_bemio) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.h5') ;;
     fuzz_capytaine) mapfile -t files < <(find data tests/bem tests/bad_bem -name '*.nc') ;;
+    fuzz_mksim) mapfile -t files < <(find cases tests/bad_mksim -name '*.mks') ;;
   esac
   [[ -d fuzz/seeds/$target ]] && mapfile -t -O "${#files[@]}" files < <(find "fuzz/seeds/$target" -type f)
   local file
@@ -74,6 +75,13 @@ write_dictionary() {
     fuzz_wamit)
       printf '%s\n' '"-1"' '"0"' '"1.0E+00"' '"-.1E-308"' '"NaN"' '"Infinity"' '"1e400"' '"  6"' '"\x0A"' \
         '" 1 1 "' '"2147483648"' >"$dictionary" ;;
+    fuzz_mksim)
+      printf '%s\n' '"MODEL "' '"ENDMODEL"' '"SYSTEM"' '"KINEMATIC ANALYSIS"' '"starting time = "' \
+        '"ending time = "' '"print interval = "' '"nr tolerance = "' '"assembly tolerance = "' '"BODY "' \
+        '"{ ground }"' '"center of gravity = "' '"par = "' '"triad "' '"associated body = "' '"origin = "' \
+        '"revolute joint "' '"spherical joint "' '"translational joint "' '"universal joint "' \
+        '"cylindrical joint "' '"triad = "' '"driver "' '".x = "' '"TIME"' '"(0,0,0)"' '"{(0,0,0),(0,0,1),(1,0,0)}"' \
+        '"//"' '"1e308"' '"-1e-300"' >"$dictionary" ;;
     fuzz_bemio | fuzz_capytaine)
       grep -ohE '"/?[a-zA-Z_][a-zA-Z0-9_/]{2,40}"' io/bem/*.cpp | sort -u >"$dictionary" ;;
   esac
@@ -83,6 +91,7 @@ max_len_of() {
   case $1 in
     fuzz_case) echo 16384 ;;
     fuzz_expression) echo 512 ;;
+    fuzz_mksim) echo 8192 ;;
     fuzz_wamit) echo 32768 ;;
     *) echo 65536 ;;
   esac

@@ -21,7 +21,7 @@ constexpr KeySpec root_keys[] = {
     {"joints", "list", "–", "required", "the spanning tree (may be empty)"},
     {"loop_joints", "list", "–", "none", "joints that close kinematic loops"},
     {"constraints", "list", "–", "none", "distance and coupler constraints"},
-    {"drivers", "list", "–", "none", "prescribed motion of joint coordinates"},
+    {"drivers", "list", "–", "none", "prescribed motion of joint coordinates, body points, distances, angles"},
     {"forces", "list", "–", "none", "force elements"},
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
@@ -83,12 +83,51 @@ constexpr KeySpec joint_keys[] = {
 
 constexpr KeySpec driver_keys[] = {
     {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "`joint`", "joint, absolute, distance or angle"},
     {"joint", "text", "–", "required", "the driven joint"},
     {"coordinate", "number", "–", "0", "which of its coordinates"},
     {"position", "expression", "m or rad", "required (or `table`)", "f(t)"},
     {"velocity", "expression", "m/s or rad/s", "exact, from `position`", "f'(t)"},
     {"acceleration", "expression", "m/s² or rad/s²", "exact, from `position`", "f''(t)"},
     {"table", "text", "–", "none", "CSV file of samples (time s, value) instead of `position`"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec absolute_driver_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`absolute`"},
+    {"body", "text", "–", "required", "the driven body"},
+    {"point", "vector", "m", "`[0, 0, 0]`", "the driven point, body frame"},
+    {"direction", "vector", "–", "required", "unit vector, world frame: direction . p_world(point) = f(t)"},
+    {"position", "expression", "m", "required", "f(t)"},
+    {"velocity", "expression", "m/s", "by differences", "f'(t)"},
+    {"acceleration", "expression", "m/s²", "by differences", "f''(t)"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec distance_driver_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`distance`"},
+    {"body_a", "text", "–", "required", "first body (`ground` allowed)"},
+    {"point_a", "vector", "m", "`[0, 0, 0]`", "point on body a, its frame"},
+    {"body_b", "text", "–", "required", "second body (`ground` allowed)"},
+    {"point_b", "vector", "m", "`[0, 0, 0]`", "point on body b, its frame"},
+    {"position", "expression", "m", "required", "f(t) > 0: the distance between the points"},
+    {"velocity", "expression", "m/s", "by differences", "f'(t)"},
+    {"acceleration", "expression", "m/s²", "by differences", "f''(t)"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec angle_driver_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`angle`"},
+    {"body_a", "text", "–", "required", "first body (`ground` allowed)"},
+    {"frame_a", "map", "–", "identity", "frame a in body a's frame (`frame` keys)"},
+    {"body_b", "text", "–", "required", "second body (`ground` allowed)"},
+    {"frame_b", "map", "–", "identity", "frame b in body b's frame (`frame` keys)"},
+    {"position", "expression", "rad", "required", "f(t): the angle of frame b's x about frame a's z, from frame a's x"},
+    {"velocity", "expression", "rad/s", "by differences", "f'(t)"},
+    {"acceleration", "expression", "rad/s²", "by differences", "f''(t)"},
     {"description", "text", "–", "–", "free text"},
 };
 
@@ -209,6 +248,9 @@ constexpr SchemaSection fixed_sections[] = {
     {"distance", distance_keys},
     {"coupler", coupler_keys},
     {"drivers[i]", driver_keys},
+    {"absolute_driver", absolute_driver_keys},
+    {"distance_driver", distance_driver_keys},
+    {"angle_driver", angle_driver_keys},
     {"solver", solver_keys},
     {"output", output_keys},
     {"kinematics", kinematics_keys},

@@ -150,6 +150,7 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   }
 
   define_constraint_channels(output);
+  define_driver_channels();
   if (output.forces) define_element_channels();
 
   records_energy_ = output.energy;
@@ -186,6 +187,7 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
        }});
   if (!output.reactions) return;
   for (const Constraint& constraint : model.constraints) {
+    if (constraint.is_driver()) continue;  // in /drivers (define_driver_channels)
     const std::string base = "/constraints/" + constraint.name;
     const int rows = static_cast<int>(constraint.rows.size());
     std::vector<std::string> labels;
@@ -210,6 +212,31 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
     add({base + "/reaction_moment", 3, "N m",
          "moment exerted by side A on side B about frame B's origin, world axes", xyz,
          [wrench_at_b](double, double* out) { map3(out) = wrench_at_b().second; }});
+  }
+}
+
+void Recorder::define_driver_channels() {
+  const MultibodySystem& system = *scene_.system;
+  for (const Constraint& constraint : system.model().constraints) {
+    const DriverFunction* motion = constraint.driver_motion();
+    if (!motion) continue;
+    const std::string base = "/drivers/" + constraint.name;
+    const bool angular = driver_is_angular(system.model(), constraint);
+    const std::string unit = angular ? "rad" : "m";
+    const int row = constraint.first_row;
+    // Phi = g(q) - f(t) with dPhi/dg = 1, so J^T lambda is lambda along the increasing
+    // coordinate g: the multiplier is the actuator's force or torque (docs/physics/drivers.md).
+    add({base + (angular ? "/torque" : "/force"), 0, angular ? "N m" : "N",
+         std::string(constraint.kind_name()) + " '" + constraint.name + "': the " + (angular ? "torque" : "force") +
+             " it applies along its increasing coordinate (" + constraint.rows[0].description +
+             "), the multiplier lambda of M qdd + C = tau + J^T lambda",
+         {}, [&system, row](double, double* out) { out[0] = system.data().constraint_multipliers[row]; }});
+    add({base + "/position", 0, unit, "prescribed f(t)", {},
+         [motion](double t, double* out) { out[0] = (*motion)(t).position; }});
+    add({base + "/velocity", 0, unit + "/s", "prescribed f'(t)", {},
+         [motion](double t, double* out) { out[0] = (*motion)(t).velocity; }});
+    add({base + "/acceleration", 0, unit + "/s/s", "prescribed f''(t)", {},
+         [motion](double t, double* out) { out[0] = (*motion)(t).acceleration; }});
   }
 }
 

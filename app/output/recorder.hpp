@@ -74,6 +74,8 @@ class Recorder {
   void define_channels(const CaseDefinition& definition);
   /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
   void define_constraint_channels(const OutputSettings& output);
+  /// /drivers/<name>/{force or torque, position, velocity, acceleration} for every driver.
+  void define_driver_channels();
   /// /forces/<element>/<channel> for every force element that has output channels.
   void define_element_channels();
 

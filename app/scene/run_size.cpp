@@ -22,8 +22,10 @@ RunSize estimate_run_size(const CaseDefinition& definition, const Scene& scene) 
   }
   if (model.has_constraints()) {
     size.columns += 2;
-    if (output.reactions)
-      for (const Constraint& constraint : model.constraints)
+    for (const Constraint& constraint : model.constraints)
+      if (constraint.is_driver())
+        size.columns += 4;  // /drivers/<name>: force or torque, position, velocity, acceleration
+      else if (output.reactions)
         size.columns += static_cast<long>(constraint.rows.size()) + (constraint.acts_on_frames() ? 6 : 0);
   }
   if (output.forces)

@@ -37,4 +37,7 @@ void print_equilibrium_summary(const Scene& scene);
 
 int validate_command(const std::vector<std::string>& names, bool list_only);
 
+/// heavesim import-mksim: the MKSim model at `model_path` written as the case `case_path`.
+int import_mksim_command(const std::string& model_path, const std::string& case_path);
+
 }  // namespace heavesim

@@ -11,7 +11,7 @@ void print_loop_summary(const Scene& scene) {
   const Assembly& assembly = scene.assembly;
   int drivers = 0;
   for (const Constraint& constraint : model.constraints)
-    drivers += std::holds_alternative<DriverConstraint>(constraint.kind);
+    drivers += constraint.is_driver();
   fmt::print("constraints: {} ({} prescribed-motion drivers), {} equations, rank {}, so {} free degrees of freedom; "
              "assembled in {} Newton iterations (largest change {:.3g} in q, {:.3g} in v; |Phi| = {:.2g})\n",
              model.constraints.size(), drivers, model.num_constraint_rows, assembly.rank.rank,

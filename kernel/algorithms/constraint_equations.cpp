@@ -1,5 +1,8 @@
 #include "kernel/algorithms/constraint_equations.hpp"
 
+#include <cmath>
+#include <numbers>
+
 namespace heavesim {
 namespace {
 
@@ -25,6 +28,56 @@ FrameState frame_state(const Data& data, const Constraint& constraint) {
   return state;
 }
 
+/// The angle row theta = atan2(s, c), s = y_A . x_B, c = x_A . x_B (frames' world
+/// axes). With e_s = x_B x y_A and e_c = x_B x x_A, s' = e_s . (w_b - w_a) and
+/// c' = e_c . (w_b - w_a) (each axis turns with its link: x' = w x x), so
+///   theta' = (c s' - s c') / (s^2 + c^2) = w . (w_b - w_a),  w = (c e_s - s e_c) / n,
+/// n = s^2 + c^2 (docs/physics/drivers.md). n = 0 (x_B along z_A) leaves the angle
+/// undefined: no direction then.
+struct AngleTerms {
+  double s = 0.0, c = 0.0, n = 0.0;
+  Vector3 e_s, e_c;
+};
+AngleTerms angle_terms(const FrameState& f) {
+  AngleTerms a;
+  const Vector3 x_a = f.R_a.col(0), y_a = f.R_a.col(1), x_b = f.R_b.col(0);
+  a.s = y_a.dot(x_b);
+  a.c = x_a.dot(x_b);
+  a.n = a.s * a.s + a.c * a.c;
+  a.e_s = x_b.cross(y_a);
+  a.e_c = x_b.cross(x_a);
+  return a;
+}
+Vector3 angle_rate_axis(const FrameState& f) {
+  const AngleTerms a = angle_terms(f);
+  if (!(a.n > 0.0)) return Vector3::Zero();
+  return (a.c * a.e_s - a.s * a.e_c) / a.n;
+}
+/// dw/dt for angle_rate_axis: the quotient rule on (c e_s - s e_c) / n with
+/// e_s' = x_B' x y_A + x_B x y_A', e_c' likewise, and n' = 2 (s s' + c c').
+Vector3 angle_rate_axis_rate(const FrameState& f) {
+  const AngleTerms a = angle_terms(f);
+  if (!(a.n > 0.0)) return Vector3::Zero();
+  const Vector3 x_a = f.R_a.col(0), y_a = f.R_a.col(1), x_b = f.R_b.col(0);
+  const Vector3 w_a = f.v_a.angular(), w_b = f.v_b.angular(), relative = w_b - w_a;
+  const Vector3 x_a_dot = w_a.cross(x_a), y_a_dot = w_a.cross(y_a), x_b_dot = w_b.cross(x_b);
+  const double s_dot = a.e_s.dot(relative), c_dot = a.e_c.dot(relative);
+  const Vector3 e_s_dot = x_b_dot.cross(y_a) + x_b.cross(y_a_dot);
+  const Vector3 e_c_dot = x_b_dot.cross(x_a) + x_b.cross(x_a_dot);
+  const double n_dot = 2.0 * (a.s * s_dot + a.c * c_dot);
+  const Vector3 numerator = a.c * a.e_s - a.s * a.e_c;
+  const Vector3 numerator_dot = c_dot * a.e_s + a.c * e_s_dot - s_dot * a.e_c - a.s * e_c_dot;
+  return (numerator_dot - numerator * (n_dot / a.n)) / a.n;
+}
+
+/// theta - f wrapped into (-pi, pi]: the angle driver's residual, continuous however
+/// many turns theta and f have made.
+double wrapped_angle(double angle) {
+  double wrapped = std::remainder(angle, 2.0 * std::numbers::pi);  // [-pi, pi]
+  if (wrapped <= -std::numbers::pi) wrapped += 2.0 * std::numbers::pi;
+  return wrapped;
+}
+
 /// G_B: the world spatial force direction on link_b with phi' = G_B . (v_b - v_a).
 Force row_direction(const ConstraintRow& row, const FrameState& f) {
   switch (row.kind) {
@@ -38,6 +91,17 @@ Force row_direction(const ConstraintRow& row, const FrameState& f) {
       const Vector3 r = f.p_b - f.p_a;
       return Force(f.p_b.cross(r), r);
     }
+    case ConstraintRowKind::length: {
+      // d|r|/dt = u . (pdot_b - pdot_a), u = r / |r|; as for `distance`, the moment
+      // p_b x u makes G_B . (v_b - v_a) read link a's velocity at p_b, which differs
+      // from pdot_a by w_a x r, normal to u.
+      const double length = (f.p_b - f.p_a).norm();
+      if (!(length > 0.0)) return Force::Zero();  // coincident points: no direction
+      const Vector3 u = (f.p_b - f.p_a) / length;
+      return Force(f.p_b.cross(u), u);
+    }
+    case ConstraintRowKind::angle:
+      return Force(angle_rate_axis(f), Vector3::Zero());
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
       break;
@@ -61,6 +125,15 @@ Force row_direction_rate(const ConstraintRow& row, const FrameState& f) {
       const Vector3 r = f.p_b - f.p_a, r_dot = f.pdot_b - f.pdot_a;
       return Force(f.pdot_b.cross(r) + f.p_b.cross(r_dot), r_dot);
     }
+    case ConstraintRowKind::length: {
+      const Vector3 r = f.p_b - f.p_a, r_dot = f.pdot_b - f.pdot_a;
+      const double length = r.norm();
+      if (!(length > 0.0)) return Force::Zero();
+      const Vector3 u = r / length, u_dot = (r_dot - u * u.dot(r_dot)) / length;
+      return Force(f.pdot_b.cross(u) + f.p_b.cross(u_dot), u_dot);
+    }
+    case ConstraintRowKind::angle:
+      return Force(angle_rate_axis_rate(f), Vector3::Zero());
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
       break;
@@ -77,6 +150,16 @@ Motion acceleration_without_qdd(const Model& model, const Data& data, int link) 
 }
 
 }  // namespace
+
+bool driver_is_angular(const Model& model, const Constraint& driver) {
+  if (std::holds_alternative<AngleDriverConstraint>(driver.kind)) return true;
+  const auto* joint_driver = std::get_if<DriverConstraint>(&driver.kind);
+  if (!joint_driver) return false;
+  const JointType& type = model.joints[joint_driver->joint].type;
+  if (std::holds_alternative<PrismaticJoint>(type)) return false;
+  if (std::holds_alternative<CylindricalJoint>(type)) return joint_driver->coordinate == 0;
+  return true;
+}
 
 Transform constraint_frame_a(const Data& data, const Constraint& constraint) {
   return data.X_world_link[constraint.link_a] * constraint.X_linkA_frame;
@@ -98,7 +181,7 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
                                        coupler->ratio * q[model.joints[coupler->joint_b].q_index] - coupler->offset;
       continue;
     }
-    const auto* distance = std::get_if<DistanceConstraint>(&constraint.kind);  // distance rows have one
+    const auto* distance = std::get_if<DistanceConstraint>(&constraint.kind);  // `distance` rows have one
     const Transform A = constraint_frame_a(data, constraint), B = constraint_frame_b(data, constraint);
     const Vector3 r = B.translation() - A.translation();
     for (std::size_t k = 0; k < constraint.rows.size(); ++k) {
@@ -112,9 +195,19 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
         case ConstraintRowKind::distance:
           value = 0.5 * (r.squaredNorm() - distance->distance * distance->distance);
           break;
+        case ConstraintRowKind::length: value = r.norm(); break;
+        case ConstraintRowKind::angle:
+          value = std::atan2(A.rotation().col(1).dot(B.rotation().col(0)), A.rotation().col(0).dot(B.rotation().col(0)));
+          break;
         case ConstraintRowKind::coupler:
         case ConstraintRowKind::driver: break;
       }
+    }
+    // A driver on frames: its one row is the measured coordinate minus f(t).
+    if (const DriverFunction* motion = constraint.driver_motion()) {
+      double& value = residual[constraint.first_row];
+      value -= (*motion)(t).position;
+      if (std::holds_alternative<AngleDriverConstraint>(constraint.kind)) value = wrapped_angle(value);
     }
   }
 }
@@ -150,8 +243,8 @@ void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<Matrix
 void constraint_velocity_target(const Model& model, double t, Eigen::Ref<VectorX> target) {
   target.setZero();
   for (const Constraint& constraint : model.constraints)
-    if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind))
-      target[constraint.first_row] = driver->motion(t).velocity;
+    if (const DriverFunction* motion = constraint.driver_motion())
+      target[constraint.first_row] = (*motion)(t).velocity;
 }
 
 void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> bias) {
@@ -175,6 +268,9 @@ void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<
           -(dot(relative_velocity, row_direction_rate(row, frames)) +
             dot(relative_bias_acceleration, row_direction(row, frames)));
     }
+    // A driver on frames: Phi = g(q) - f(t), so gamma gains + f''(t).
+    if (const DriverFunction* motion = constraint.driver_motion())
+      bias[constraint.first_row] += (*motion)(t).acceleration;
   }
 }
 

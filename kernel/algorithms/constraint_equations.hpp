@@ -8,7 +8,8 @@
 
 namespace heavesim {
 
-/// Phi(q, t) (m); requires the position stage. Coupler and driver rows read q.
+/// Phi(q, t) (m or rad); requires the position stage. Coupler and joint-coordinate
+/// driver rows read q.
 void constraint_residual(const Model& model, const Data& data, const VectorX& q, double t,
                          Eigen::Ref<VectorX> residual);
 
@@ -24,13 +25,18 @@ void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<
 
 /// The wrench (world, about the origin) that constraint c exerts on its link_b for
 /// the multipliers lambda (all rows); link_a receives the opposite wrench. Zero for couplers
-/// and drivers (they act on joint coordinates).
+/// and joint-coordinate drivers (they act on joint coordinates).
 Force constraint_wrench(const Model& model, const Data& data, const Constraint& constraint, const VectorX& lambda);
 
 /// Adds J^T lambda as loads: constraint wrenches on the links (f_ext) and coupler and
-/// driver forces on the joint coordinates (tau).
+/// joint-coordinate driver forces on the joint coordinates (tau).
 void add_constraint_loads(const Model& model, const Data& data, const VectorX& lambda,
                           AlignedVector<Force>& external_forces_world, VectorX& tau);
+
+/// Whether a driver's coordinate is an angle [rad] (its multiplier a torque, N m) rather
+/// than a length [m] (a force, N): angle drivers, and joint drivers of a rotation
+/// coordinate (revolute, universal, a cylindrical joint's coordinate 0).
+bool driver_is_angular(const Model& model, const Constraint& driver);
 
 /// The world placements of a constraint's frames A and B; requires the position stage.
 Transform constraint_frame_a(const Data& data, const Constraint& constraint);

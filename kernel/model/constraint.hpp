@@ -9,6 +9,13 @@
 //   distance       (|p_B - p_A|^2 - L^2) / 2 = 0
 //   coupler        q_a - ratio q_b - offset = 0 (coordinates of two 1-DoF joints)
 //   driver         q_a,k - f(t) = 0            (prescribed motion of one joint coordinate)
+//   length         |p_B - p_A|                 (a distance driver's measured coordinate, m)
+//   angle          atan2(y_A . x_B, x_A . x_B) (an angle driver's: x_B's angle about z_A, rad)
+//
+// Drivers on frames (absolute: an `along` row on a world-fixed frame A; distance: a
+// `length` row; angle: an `angle` row) subtract f(t) from their row, so that every
+// driver reads "measured coordinate - f(t) = 0" and its multiplier is the actuator's
+// force (N) or torque (N m) along the increasing coordinate (docs/physics/drivers.md).
 //
 // For every spatial row d(phi)/dt = G_B . (v_B - v_A) exactly, with G_B a world spatial
 // force direction on B (and -G_B on A): this gives J, -dJ/dt v and the constraint's
@@ -23,7 +30,7 @@
 
 namespace heavesim {
 
-enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver };
+enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver, length, angle };
 
 struct ConstraintRow {
   ConstraintRowKind kind = ConstraintRowKind::along;
@@ -59,7 +66,25 @@ struct DriverConstraint {
   int coordinate = 0;     // which coordinate of the joint it prescribes
   DriverFunction motion;  // q_joint,coordinate = motion(t).position
 };
-using ConstraintKind = std::variant<LoopJointConstraint, DistanceConstraint, CouplerConstraint, DriverConstraint>;
+/// direction . p_B - f(t) = 0: a coordinate of a body point (frame B's origin) along a
+/// world direction. Frame A is the ground frame turned so that its x is the direction
+/// (link_a = 0), so that the row is an `along` row on x.
+struct AbsoluteDriverConstraint {
+  Vector3 direction_world = Vector3::UnitX();  // unit, world frame
+  DriverFunction motion;                       // m
+};
+/// |p_B - p_A| - f(t) = 0 between the origins of frames A and B; f > 0.
+struct DistanceDriverConstraint {
+  DriverFunction motion;  // m
+};
+/// wrap(theta - f(t)) = 0, theta = atan2(y_A . x_B, x_A . x_B): the angle of frame B's
+/// x axis about frame A's z axis, measured from A's x; wrapped into (-pi, pi] so that it
+/// is continuous over any number of turns.
+struct AngleDriverConstraint {
+  DriverFunction motion;  // rad
+};
+using ConstraintKind = std::variant<LoopJointConstraint, DistanceConstraint, CouplerConstraint, DriverConstraint,
+                                    AbsoluteDriverConstraint, DistanceDriverConstraint, AngleDriverConstraint>;
 
 struct Constraint {
   std::string name;
@@ -72,13 +97,30 @@ struct Constraint {
   int first_row = 0;
   std::vector<ConstraintRow> rows;
 
-  /// Whether it acts between frames A and B (loop joint, distance) rather than on coordinates.
+  /// Whether it acts between frames A and B (loop joint, distance, the drivers on
+  /// frames) rather than on coordinates.
   bool acts_on_frames() const {
-    return std::holds_alternative<LoopJointConstraint>(kind) || std::holds_alternative<DistanceConstraint>(kind);
+    return std::holds_alternative<LoopJointConstraint>(kind) || std::holds_alternative<DistanceConstraint>(kind) ||
+           std::holds_alternative<AbsoluteDriverConstraint>(kind) ||
+           std::holds_alternative<DistanceDriverConstraint>(kind) || std::holds_alternative<AngleDriverConstraint>(kind);
   }
-  /// "loop joint", "distance constraint", "coupler" or "driver".
+  /// The prescribed motion f(t) of a driver of any kind; null for other constraints.
+  const DriverFunction* driver_motion() const {
+    return std::visit(
+        [](const auto& alternative) -> const DriverFunction* {
+          if constexpr (requires { alternative.motion; })
+            return &alternative.motion;
+          else
+            return nullptr;
+        },
+        kind);
+  }
+  bool is_driver() const { return driver_motion() != nullptr; }
+  /// "loop joint", "distance constraint", "coupler", "driver", "absolute driver",
+  /// "distance driver" or "angle driver".
   const char* kind_name() const {
-    static constexpr const char* names[] = {"loop joint", "distance constraint", "coupler", "driver"};
+    static constexpr const char* names[] = {"loop joint",      "distance constraint", "coupler",     "driver",
+                                            "absolute driver", "distance driver",     "angle driver"};
     return names[kind.index()];
   }
 };

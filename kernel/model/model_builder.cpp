@@ -85,6 +85,91 @@ Matrix3 canonical_axes(const Definition& joint, ModelError::ItemKind item) {
   return Q;
 }
 
+std::string format_point(const Vector3& point) {
+  return "(" + format_number(point.x()) + ", " + format_number(point.y()) + ", " + format_number(point.z()) + ")";
+}
+
+/// A loop joint row's name in the user's joint frame: rows are written on the
+/// canonical frames (joint axis turned to z), whose axes are Q's columns in the user's
+/// joint frame, so a revolute about y reports its blocked rotations about x and z, not
+/// the canonical x and y.
+std::string describe_in_joint_frame(const ConstraintRow& row, const Matrix3& Q) {
+  const bool translation = row.kind == ConstraintRowKind::along;
+  // along: the axis it blocks translation along; perpendicular a_A . b_B: the third axis.
+  const int canonical_axis = translation ? row.axis_a : 3 - row.axis_a - row.axis_b;
+  const Vector3 axis = Q.col(canonical_axis);
+  std::string name = format_point(axis);
+  static const char* axis_names[3] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k)
+    if ((axis.cwiseAbs() - Vector3::Unit(k)).cwiseAbs().maxCoeff() <= 1e-12) name = axis_names[k];
+  return (translation ? "translation along " : "rotation about ") + name;
+}
+
+/// The row's name for describe_constraint_row: what the driver measures, in the user's
+/// bodies and points ("x of block's point (0, 0, 0)").
+std::string frame_driver_description(const DriverDefinition& def) {
+  const std::string point_b = def.body_b + "'s point " + format_point(def.X_body_b_frame.translation());
+  switch (def.kind) {
+    case DriverKind::absolute: {
+      static const char* axes[3] = {"x", "y", "z"};
+      for (int axis = 0; axis < 3; ++axis)
+        if (def.direction.normalized() == Vector3::Unit(axis)) return std::string(axes[axis]) + " of " + point_b;
+      return "component along " + format_point(def.direction) + " of " + point_b;
+    }
+    case DriverKind::distance:
+      return "distance from " + def.body_a + "'s point " + format_point(def.X_body_a_frame.translation()) + " to " +
+             point_b;
+    case DriverKind::angle:
+      return "angle of " + def.body_b + "'s frame_b x axis about " + def.body_a + "'s frame_a z axis";
+    case DriverKind::joint: break;
+  }
+  return "prescribed coordinate";
+}
+
+/// An absolute, distance or angle driver: frames A and B on their links and the one row
+/// whose measured coordinate f(t) prescribes (constraint.hpp).
+template <class LinkOf>
+Constraint frame_driver(const Model& model, Constraint constraint, const DriverDefinition& def, const LinkOf& link_of) {
+  const bool absolute = def.kind == DriverKind::absolute;
+  constraint.link_a = absolute ? 0 : link_of(def.name, "body_a", def.body_a);
+  constraint.link_b = link_of(def.name, absolute ? "body" : "body_b", def.body_b);
+  if (constraint.link_a == constraint.link_b)
+    throw constraint_error(def.name, absolute ? "body" : "body_b",
+                           absolute ? "'ground', which does not move" : "body '" + def.body_a + "' on both ends",
+                           absolute ? "a body" : "two different bodies");
+  constraint.X_linkB_frame = model.links[constraint.link_b].X_link_body * def.X_body_b_frame;
+  ConstraintRow row;
+  row.description = frame_driver_description(def);
+  switch (def.kind) {
+    case DriverKind::absolute: {
+      const double length = def.direction.norm();
+      if (!(std::abs(length - 1.0) <= 1e-6))
+        throw constraint_error(def.name, "direction", "a direction of length " + format_number(length),
+                               "a unit vector (world frame)");
+      const Vector3 direction = def.direction / length;
+      // Frame A: the ground frame turned so that its x is the direction (an `along` row on x).
+      constraint.X_linkA_frame = Transform::from_rotation(
+          Eigen::Quaterniond::FromTwoVectors(Vector3::UnitX(), direction).toRotationMatrix());
+      constraint.kind = AbsoluteDriverConstraint{direction, def.motion};
+      row.kind = ConstraintRowKind::along;
+      break;
+    }
+    case DriverKind::distance:
+      constraint.X_linkA_frame = model.links[constraint.link_a].X_link_body * def.X_body_a_frame;
+      constraint.kind = DistanceDriverConstraint{def.motion};
+      row.kind = ConstraintRowKind::length;
+      break;
+    case DriverKind::angle:
+      constraint.X_linkA_frame = model.links[constraint.link_a].X_link_body * def.X_body_a_frame;
+      constraint.kind = AngleDriverConstraint{def.motion};
+      row.kind = ConstraintRowKind::angle;
+      break;
+    case DriverKind::joint: break;
+  }
+  constraint.rows = {row};
+  return constraint;
+}
+
 }  // namespace
 
 void ModelBuilder::add_constraints(Model& model) const {
@@ -126,6 +211,7 @@ void ModelBuilder::add_constraints(Model& model) const {
     constraint.X_linkB_frame = model.links[constraint.link_b].X_link_body * def.X_child_joint * rotate;
     constraint.R_joint_frame = Q;
     constraint.rows = loop_joint_rows(def.kind);
+    for (ConstraintRow& row : constraint.rows) row.description = describe_in_joint_frame(row, Q);
     add(std::move(constraint));
   }
   for (const DistanceConstraintDefinition& def : distances_) {
@@ -166,6 +252,11 @@ void ModelBuilder::add_constraints(Model& model) const {
     add(std::move(constraint));
   }
   for (const DriverDefinition& def : drivers_) {
+    if (!def.motion) throw constraint_error(def.name, "motion", "no motion", "a function of time");
+    if (def.kind != DriverKind::joint) {
+      add(frame_driver(model, start(def.name, DriverConstraint{}), def, link_of));
+      continue;
+    }
     Constraint constraint = start(def.name, DriverConstraint{});
     const int index = model.joint_index(def.joint);
     if (index < 0)
@@ -177,7 +268,6 @@ void ModelBuilder::add_constraints(Model& model) const {
     if (def.coordinate < 0 || def.coordinate >= joint.nv)
       throw constraint_error(def.name, "coordinate", std::to_string(def.coordinate),
                              "0 to " + std::to_string(joint.nv - 1) + " (the coordinates of joint '" + def.joint + "')");
-    if (!def.motion) throw constraint_error(def.name, "motion", "no motion", "a function of time");
     for (const Constraint& other : model.constraints)
       if (const auto* driver = std::get_if<DriverConstraint>(&other.kind);
           driver && driver->joint == index && driver->coordinate == def.coordinate)

@@ -83,14 +83,29 @@ struct CouplerDefinition {
   double offset = 0.0;                   // rad or m
 };
 
-/// Prescribes one coordinate of a joint with plain coordinates (revolute, prismatic,
-/// cylindrical, universal): q_joint,coordinate = motion(t).position. The motion's
-/// velocity and acceleration must be its exact time derivatives.
+/// What a driver prescribes (docs/physics/drivers.md):
+///   joint     q_joint,coordinate = f(t): one coordinate of a joint with plain
+///             coordinates (revolute, prismatic, cylindrical, universal) [m or rad]
+///   absolute  direction . p_world(body point) = f(t) [m]
+///   distance  |p_b - p_a| = f(t) > 0 between two body points [m]
+///   angle     the angle of frame b's x about frame a's z, from frame a's x, = f(t) [rad]
+enum class DriverKind { joint, absolute, distance, angle };
+
+/// A prescribed motion. The motion's velocity and acceleration must be its exact time
+/// derivatives. Only the fields of its kind are read; ModelError fields are named
+/// after the case keys of that kind (absolute: body, point, direction; distance:
+/// body_a, body_b; angle: body_a, frame_a, body_b, frame_b).
 struct DriverDefinition {
   std::string name;
-  std::string joint;
-  int coordinate = 0;
+  std::string joint;                      // joint
+  int coordinate = 0;                     // joint
   DriverFunction motion;
+  DriverKind kind = DriverKind::joint;
+  std::string body_a;                     // distance, angle: body name or "ground"
+  std::string body_b;                     // absolute (the body), distance, angle
+  Transform X_body_a_frame;               // distance: the point (translation only); angle: frame a
+  Transform X_body_b_frame;               // absolute, distance: the point; angle: frame b
+  Vector3 direction = Vector3::UnitX();   // absolute: unit, world frame
 };
 
 class ModelBuilder {

@@ -261,12 +261,14 @@ StateDiagnosis MultibodySystem::constraint_loss(double max_ratio) {
     if (const auto* driver = std::get_if<DriverConstraint>(&constraint->kind))
       drivers += (drivers.empty() ? "driver '" : ", driver '") + constraint->name + "' (joint '" +
                  model.joints[driver->joint].name + "')";
+    else if (constraint->is_driver())
+      drivers += (drivers.empty() ? "" : ", ") + std::string(constraint->kind_name()) + " '" + constraint->name + "'";
   }
   const bool driven = !drivers.empty();
   if (!(max_ratio >= 1.0 || ratio < max_ratio || (driven && ratio < 100.0 * max_ratio))) return {};
   std::string loop;  // the other constraints that close the loop the drivers pull on
   for (const Constraint* constraint : named)
-    if (!std::holds_alternative<DriverConstraint>(constraint->kind))
+    if (!constraint->is_driver())
       loop += (loop.empty() ? "" : ", ") + std::string(constraint->kind_name()) + " '" + constraint->name + "'";
   char text[32];
   std::snprintf(text, sizeof text, "%.2g", ratio);

@@ -38,8 +38,8 @@ class Constraints : public ::testing::Test {
 
 TEST_F(Constraints, EveryKindContributesItsRows) {
   // fixed 6 + revolute 5 + prismatic 5 + cylindrical 4 + universal 4 + spherical 3 + distance 1 + coupler 1
-  // + driver 1
-  EXPECT_EQ(model->num_constraint_rows, 30);
+  // + joint, absolute, distance and angle drivers 1 each
+  EXPECT_EQ(model->num_constraint_rows, 33);
 }
 
 TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
@@ -129,6 +129,53 @@ TEST(ConstraintRank, RedundantRowsOfAnOverconstrainedLoopAreNamed) {
   EXPECT_EQ(rank.rank, 1);
   EXPECT_EQ(rank.redundant_rows.size(), 5u);
   EXPECT_NE(describe_constraint_row(model, 2).find("loop joint 'weld_b': translation along z"), std::string::npos);
+}
+
+TEST(ConstraintRank, RedundantRowsOfAPlanarFourBarAreNamedInTheUsersJointFrame) {
+  // A four-bar in the world xz plane, every joint revolute about the user's y axis, the
+  // loop closed by a revolute loop joint: of its 5 rows the 3 that block out-of-plane
+  // motion (translation along y, rotations about x and z) are redundant, since planar
+  // joints cannot violate them (their Jacobian rows are zero). The kernel writes the
+  // rows on a frame turned so that the axis is z; they must be named in the user's.
+  ModelBuilder builder;
+  for (const char* body : {"crank", "coupler", "rocker"})
+    builder.add_body({body, Inertia(1.0, Vector3::Zero(), Matrix3::Identity() * 0.1), std::nullopt});
+  auto revolute = [](const char* name, const char* parent, const char* child, const Vector3& at) {
+    JointDefinition joint;
+    joint.name = name;
+    joint.kind = JointKind::revolute;
+    joint.axis = Vector3::UnitY();
+    joint.parent = parent;
+    joint.child = child;
+    joint.X_parent_joint = Transform::from_translation(at);
+    return joint;
+  };
+  builder.add_joint(revolute("pivot_a", "ground", "crank", Vector3::Zero()));
+  builder.add_joint(revolute("pin", "crank", "coupler", Vector3(0, 0, 1)));
+  builder.add_joint(revolute("pivot_b", "ground", "rocker", Vector3(2, 0, 0)));
+  LoopJointDefinition closure;  // coupler (2, 0, 0.5) meets rocker (0, 0, 1.5) at world (2, 0, 1.5)
+  closure.name = "closure";
+  closure.kind = JointKind::revolute;
+  closure.axis = Vector3::UnitY();
+  closure.parent = "coupler";
+  closure.child = "rocker";
+  closure.X_parent_joint = Transform::from_translation(Vector3(2, 0, 0.5));
+  closure.X_child_joint = Transform::from_translation(Vector3(0, 0, 1.5));
+  builder.add_loop_joint(closure);
+  const Model model = builder.build();
+  Data data(model);
+  update_positions(model, data, model.neutral_configuration());
+  const ConstraintRank rank = analyse_constraint_rank(model, data);
+  EXPECT_EQ(rank.rows, 5);
+  EXPECT_EQ(rank.rank, 2);
+  std::vector<std::string> redundant;
+  for (int row : rank.redundant_rows) redundant.push_back(describe_constraint_row(model, row));
+  EXPECT_EQ(redundant, (std::vector<std::string>{"loop joint 'closure': translation along y",
+                                                 "loop joint 'closure': rotation about x",
+                                                 "loop joint 'closure': rotation about z"}));
+  // And the two rows that close the loop in its plane.
+  EXPECT_EQ(describe_constraint_row(model, 0), "loop joint 'closure': translation along x");
+  EXPECT_EQ(describe_constraint_row(model, 1), "loop joint 'closure': translation along z");
 }
 
 }  // namespace

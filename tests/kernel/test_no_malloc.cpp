@@ -10,6 +10,7 @@
 
 #include "control/active/active_compensator.hpp"
 #include "control/pneumatic/pneumatic_compensator.hpp"
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
@@ -61,6 +62,33 @@ TEST(NoMalloc, KernelAlgorithmsDoNotAllocate) {
       joint_reaction(model, data, 5);
     });
   }
+}
+
+TEST(NoMalloc, ConstraintEquationsOfEveryKindDoNotAllocate) {
+  // Loop joints of every kind, a distance, a coupler and the joint, absolute, distance
+  // and angle drivers: Phi, J, nu, gamma and the loads, per time point of a kinematic
+  // sweep and per step of a run.
+  std::mt19937_64 random(5);
+  samples::RandomTreeOptions options;
+  options.bodies = 10;
+  options.constraints = true;
+  const Model model = samples::random_tree(random, options);
+  Data data(model);
+  const samples::RandomState state = samples::random_state(model, random);
+  const int m = model.num_constraint_rows;
+  VectorX phi(m), nu(m), gamma(m), lambda = VectorX::Ones(m), tau = VectorX::Zero(model.nv);
+  MatrixX J(m, model.nv);
+  AlignedVector<Force> loads(model.num_links(), Force::Zero());
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW({
+    update_positions(model, data, state.q);
+    update_velocities(model, data, state.q, state.v);
+    constraint_residual(model, data, state.q, 0.7, phi);
+    constraint_jacobian(model, data, J);
+    constraint_velocity_target(model, 0.7, nu);
+    constraint_bias(model, data, 0.7, gamma);
+    add_constraint_loads(model, data, lambda, loads, tau);
+  });
 }
 
 TEST(NoMalloc, SystemDerivativeDoesNotAllocate) {

@@ -53,6 +53,9 @@ const std::vector<ValidationCheck>& validation_checks() {
        check_l7_redundant_four_bar},
       {"L8", "driving torque of a slider-crank's crank along a prescribed motion vs Lagrange's equation",
        check_l8_driving_torque},
+      {"M1", "MKSim slider-crank in MKSim's language, imported: 28 - 27 = 1, block on x = 8 + 3 sin t, crank vs "
+             "closed form, rod spin held at zero",
+       check_m1_mksim_import},
       {"H1", "hydrostatics of a box hull by clipping vs analytic V, B, C33, C44, C55", check_h1_box_hydrostatics},
       {"H2", "hydrostatics of the MSS semi mesh vs WAMIT semisub.out", check_h2_semisub_hydrostatics},
       {"H3", "heave free decay through the kernel vs 2 pi sqrt((m + A33)/C33) and the damped closed form",
