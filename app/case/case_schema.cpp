@@ -99,9 +99,10 @@ constexpr KeySpec absolute_driver_keys[] = {
     {"body", "text", "–", "required", "the driven body"},
     {"point", "vector", "m", "`[0, 0, 0]`", "the driven point, body frame"},
     {"direction", "vector", "–", "required", "unit vector, world frame: direction . p_world(point) = f(t)"},
-    {"position", "expression", "m", "required", "f(t)"},
-    {"velocity", "expression", "m/s", "by differences", "f'(t)"},
-    {"acceleration", "expression", "m/s²", "by differences", "f''(t)"},
+    {"position", "expression", "m", "required (or `table`)", "f(t)"},
+    {"velocity", "expression", "m/s", "exact, from `position`", "f'(t)"},
+    {"acceleration", "expression", "m/s²", "exact, from `position`", "f''(t)"},
+    {"table", "text", "–", "none", "CSV file of samples (time s, value) instead of `position`"},
     {"description", "text", "–", "–", "free text"},
 };
 
@@ -112,9 +113,10 @@ constexpr KeySpec distance_driver_keys[] = {
     {"point_a", "vector", "m", "`[0, 0, 0]`", "point on body a, its frame"},
     {"body_b", "text", "–", "required", "second body (`ground` allowed)"},
     {"point_b", "vector", "m", "`[0, 0, 0]`", "point on body b, its frame"},
-    {"position", "expression", "m", "required", "f(t) > 0: the distance between the points"},
-    {"velocity", "expression", "m/s", "by differences", "f'(t)"},
-    {"acceleration", "expression", "m/s²", "by differences", "f''(t)"},
+    {"position", "expression", "m", "required (or `table`)", "f(t) > 0: the distance between the points"},
+    {"velocity", "expression", "m/s", "exact, from `position`", "f'(t)"},
+    {"acceleration", "expression", "m/s²", "exact, from `position`", "f''(t)"},
+    {"table", "text", "–", "none", "CSV file of samples (time s, value) instead of `position`"},
     {"description", "text", "–", "–", "free text"},
 };
 
@@ -125,9 +127,10 @@ constexpr KeySpec angle_driver_keys[] = {
     {"frame_a", "map", "–", "identity", "frame a in body a's frame (`frame` keys)"},
     {"body_b", "text", "–", "required", "second body (`ground` allowed)"},
     {"frame_b", "map", "–", "identity", "frame b in body b's frame (`frame` keys)"},
-    {"position", "expression", "rad", "required", "f(t): the angle of frame b's x about frame a's z, from frame a's x"},
-    {"velocity", "expression", "rad/s", "by differences", "f'(t)"},
-    {"acceleration", "expression", "rad/s²", "by differences", "f''(t)"},
+    {"position", "expression", "rad", "required (or `table`)", "f(t): the angle of frame b's x about frame a's z, from frame a's x"},
+    {"velocity", "expression", "rad/s", "exact, from `position`", "f'(t)"},
+    {"acceleration", "expression", "rad/s²", "exact, from `position`", "f''(t)"},
+    {"table", "text", "–", "none", "CSV file of samples (time s, value) instead of `position`"},
     {"description", "text", "–", "–", "free text"},
 };
 
