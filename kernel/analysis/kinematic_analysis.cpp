@@ -141,7 +141,8 @@ std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, 
     basis.col(k) = data.constraint_jacobian.row(independent[k]).transpose();
     phi_independent[k] = data.constraint_residual[independent[k]];
   }
-  const Eigen::ColPivHouseholderQR<MatrixX> qr(basis);
+  Eigen::ColPivHouseholderQR<MatrixX> qr(basis.rows(), basis.cols());
+  if (basis.cols() > 0) qr.compute(basis);
   for (const int row : rank.redundant_rows) {
     // J_row^T = basis c (exactly, up to the rank threshold): c by least squares; a zero
     // row (rank 0) depends on nothing.
