@@ -45,7 +45,7 @@ void reject_over_driven(const CaseDefinition& definition, const Model& model, Da
         fought += (fought.empty() ? "" : ", ") + describe_constraint_row(model, row);
     throw definition.item_error(
         driver->name, "name",
-        fmt::format("an over-driven mechanism: driver '{}' prescribes a coordinate that {} already fix(es), to a "
+        fmt::format("an over-driven mechanism: driver '{}' prescribes a coordinate that {} already determine, to a "
                     "different value (mismatch {:.3g} m or rad at t = {:g} s)",
                     driver->name, fought, std::abs(group.mismatch), definition.solver.t_start),
         "drivers only on free directions: remove this driver or the one it fights, or drive another coordinate "

@@ -12,14 +12,16 @@
 namespace heavesim {
 namespace {
 
-/// J and, for the mass metric, M's Cholesky factor at the current position stage, then
-/// the minimum-norm factorization of J in that metric.
+/// J at the current position stage and its minimum-norm factorization in the metric; for
+/// the mass metric, M's Cholesky factor is recomputed at this stage when `update_metric`
+/// (else the one in data is kept: within a time point's Newton iterations the metric only
+/// chooses among the solutions of J dq = -Phi, and M moves by O(|dq|) there).
 void factorize_constraints(const Model& model, Data& data, KinematicWorkspace& workspace,
-                           const KinematicSettings& settings) {
+                           const KinematicSettings& settings, bool update_metric) {
   constraint_jacobian(model, data, data.constraint_jacobian);
   const Eigen::LLT<MatrixX>* metric = nullptr;
   if (settings.weighting == MotionWeighting::mass) {
-    data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+    if (update_metric) data.mass_matrix_cholesky.compute(mass_matrix(model, data));
     metric = &data.mass_matrix_cholesky;
   }
   workspace.solver.factorize(data.constraint_jacobian, metric, kinematic_rank_threshold);
@@ -57,7 +59,7 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
       break;
     }
     if (point.newton_iterations >= settings.max_iterations) break;
-    factorize_constraints(model, data, workspace, settings);
+    factorize_constraints(model, data, workspace, settings, point.newton_iterations == 0);
     workspace.rhs = -data.constraint_residual;
     workspace.solver.solve(workspace.rhs, workspace.step);  // J dq = -Phi, minimum-norm in W
     const double full_norm = data.constraint_residual.norm();
@@ -83,7 +85,8 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
   // J and its factorization follow.
   point.equation_residual = error;
   if (model.has_constraints()) {
-    factorize_constraints(model, data, workspace, settings);
+    // The velocity and acceleration solves need the exact metric at q.
+    factorize_constraints(model, data, workspace, settings, true);
     point.rank = workspace.solver.rank();
     if (workspace.reference_rank < 0) workspace.reference_rank = point.rank;
     // sigma_rank / sigma_max of the weighted Jacobian A = J L^-T (the singular values of
@@ -138,14 +141,17 @@ std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, 
     basis.col(k) = data.constraint_jacobian.row(independent[k]).transpose();
     phi_independent[k] = data.constraint_residual[independent[k]];
   }
-  const Eigen::ColPivHouseholderQR<MatrixX> qr(basis);
+  Eigen::ColPivHouseholderQR<MatrixX> qr(basis.rows(), basis.cols());
+  if (basis.cols() > 0) qr.compute(basis);
   for (const int row : rank.redundant_rows) {
-    // J_row^T = basis c (exactly, up to the rank threshold): c by least squares.
-    const VectorX c = qr.solve(VectorX(data.constraint_jacobian.row(row).transpose()));
+    // J_row^T = basis c (exactly, up to the rank threshold): c by least squares; a zero
+    // row (rank 0) depends on nothing.
+    const VectorX c = basis.cols() > 0 ? VectorX(qr.solve(VectorX(data.constraint_jacobian.row(row).transpose())))
+                                       : VectorX();
     const double mismatch = data.constraint_residual[row] - c.dot(phi_independent);
     if (!(std::abs(mismatch) > tolerance)) continue;
     InconsistentRows rows{row, {}, mismatch};
-    const double largest = c.cwiseAbs().maxCoeff();
+    const double largest = c.size() > 0 ? c.cwiseAbs().maxCoeff() : 0.0;
     for (int k = 0; k < c.size(); ++k)
       if (std::abs(c[k]) > 1e-8 * largest) rows.rows.push_back(independent[k]);
     found.push_back(std::move(rows));

@@ -5,6 +5,7 @@
 // (unreachable position: exit 3; over-driven: exit 2).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -180,28 +181,61 @@ TEST(KinematicAnalysis, LargeStepsStayOnTheAssemblyBranch) {
 }
 
 TEST(KinematicsCommand, OverDrivenMechanismIsBadInputAtTheDriver) {
-  // A second driver on the driven slide with another motion (appended by name through an
-  // include): its equation repeats the first driver's with a different value.
+  // The four-bar has one degree of freedom, which its crank driver takes; a second driver
+  // holding the rocker at 2 rad (where the crank puts it at 1.68 rad) asks for what the
+  // loop and the crank already fix. Appended by name through an include.
   const std::string path = temporary("over_driven.yaml");
   {
     std::ofstream text(path);
-    text << "include: " << testing::source_path(slider_crank) << "\n"
+    text << "include: " << testing::source_path(four_bar) << "\n"
          << "drivers:\n"
-         << "  - name: block_again\n"
-         << "    joint: slide\n"
-         << "    position: 9 + 0*t\n";
+         << "  - name: rocker_hold\n"
+         << "    joint: rocker_pivot\n"
+         << "    position: 2 + 0*t\n";
   }
   const std::string output = temporary("over_driven.h5");
   const testing::CommandResult result =
       testing::run_command_line(testing::heavesim_binary() + " kinematics " + path + " -o " + output);
   EXPECT_EQ(result.exit_code, 2) << result.output;
-  // At the second driver's key (drivers[1], line 5 of the file above), naming the first.
-  EXPECT_NE(result.output.find(path + ":5:"), std::string::npos) << result.output;
+  // At the second driver's name (drivers[1], line 3 of the file above), naming what it fights.
+  EXPECT_NE(result.output.find(path + ":3:"), std::string::npos) << result.output;
   EXPECT_NE(result.output.find("drivers[1]"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("over-driven"), std::string::npos) << result.output;
-  EXPECT_NE(result.output.find("driver 'block_x'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("over-driven mechanism: driver 'rocker_hold'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("driver 'crank_turn'"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("loop joint 'rocker_pin'"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(output));
   std::filesystem::remove(path);
+}
+
+TEST(KinematicsCommand, DeadCentresAreReportedWithTheTimeAndTheDriver) {
+  // r = 3, l = 8: the stroke x = 8 + 3 sin t in [5, 11] = [l - r, l + r] ends on both dead
+  // centres (crank and rod aligned) at t = pi/2 and 3 pi/2; the samples pass 0.8 ms from
+  // them, where the rank-4 singular value falls to ~4e-4 of the largest.
+  const std::string output = temporary("kinematics_dead_centres.h5");
+  const testing::CommandResult result = testing::run_command_line(kinematics_command_line(
+      slider_crank, output, "--set parameters.r=3 --set kinematics.singular_ratio=1e-3"));
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  EXPECT_NE(result.output.find("singular configuration at t = 1.57 s"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("singular configuration at t = 4.71 s"), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("driver 'block_x'"), std::string::npos) << result.output;
+  const H5File file(output);
+  const std::vector<double> ratio = file.read("/kinematics/smallest_singular_ratio");
+  EXPECT_LT(*std::min_element(ratio.begin(), ratio.end()), 1e-3);
+  std::filesystem::remove(output);
+}
+
+TEST(KinematicsCommand, SettingsOutsideTheirRangeAreBadInputAtTheirKey) {
+  for (const auto& [setting, key] : std::vector<std::pair<std::string, std::string>>{
+           {"kinematics.weighting=heavy", "kinematics.weighting"},
+           {"kinematics.equation_tolerance=1e-16", "kinematics.equation_tolerance"},
+           {"kinematics.max_iterations=0", "kinematics.max_iterations"},
+           {"kinematics.singular_ratio=2", "kinematics.singular_ratio"},
+           {"kinematics.newton=3", "kinematics.newton"}}) {
+    const testing::CommandResult result = testing::run_command_line(
+        kinematics_command_line(slider_crank, temporary("never_written.h5"), "--set " + setting));
+    EXPECT_EQ(result.exit_code, 2) << setting << "\n" << result.output;
+    EXPECT_NE(result.output.find(key), std::string::npos) << setting << "\n" << result.output;
+  }
 }
 
 }  // namespace
