@@ -34,7 +34,7 @@ void reject_over_driven(const CaseDefinition& definition, const Model& model, Da
     const Constraint* driver = nullptr;
     for (const int row : rows) {
       const Constraint* constraint = constraint_of_row(model, row);
-      if (constraint && std::holds_alternative<DriverConstraint>(constraint->kind) &&
+      if (constraint && constraint->is_driver() &&
           (!driver || constraint->first_row > driver->first_row))
         driver = constraint;
     }

@@ -56,7 +56,7 @@ DofReport dof_report(const Scene& scene) {
   report.coordinates = model.nv;
   report.equations = model.num_constraint_rows;
   for (const Constraint& constraint : model.constraints)
-    report.drivers += std::holds_alternative<DriverConstraint>(constraint.kind) ? 1 : 0;
+    report.drivers += constraint.is_driver() ? 1 : 0;
   report.rank = model.has_constraints() ? scene.assembly.rank.rank : 0;
   if (report.free_directions() <= 0) return report;
   MatrixX basis = MatrixX::Identity(model.nv, model.nv);
@@ -143,7 +143,7 @@ int kinematics_command(const RunOptions& options) {
   // Peak |lambda| of each driver: the largest force or torque its actuator must supply.
   std::vector<std::pair<const Constraint*, double>> driver_peaks;
   for (const Constraint& constraint : model.constraints)
-    if (std::holds_alternative<DriverConstraint>(constraint.kind)) driver_peaks.emplace_back(&constraint, 0.0);
+    if (constraint.is_driver()) driver_peaks.emplace_back(&constraint, 0.0);
   bool singular = false;
   int singular_reports = 0;
   double t_last = solver.t_start;
