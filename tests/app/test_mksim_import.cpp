@@ -230,7 +230,7 @@ TEST(MksimBadInput, EveryModelIsRefusedAtItsLineAndColumnWithFoundAndExpected) {
 }
 
 TEST(MksimBadInput, MissingAndDirectoryModelFilesAreBadInput) {
-  for (const std::string path : {std::string("/nonexistent.mks"), testing::source_path("tests/bad_mksim")}) {
+  for (const std::string& path : {std::string("/nonexistent.mks"), testing::source_path("tests/bad_mksim")}) {
     const testing::CommandResult result = testing::run_command_line(testing::heavesim_binary() + " import-mksim " +
                                                                      path + " -o /tmp/heavesim_never_written.yaml");
     EXPECT_EQ(result.exit_code, 2) << result.output;
