@@ -106,7 +106,15 @@ void random_state(const Model& model, VectorX& q, VectorX& v) {
 
 constexpr JointKind loop_kinds[] = {JointKind::fixed, JointKind::revolute, JointKind::prismatic,
                                     JointKind::cylindrical, JointKind::universal, JointKind::spherical};
-const char* const loop_kind_names[] = {"fixed", "revolute", "prismatic", "cylindrical", "universal", "spherical"};
+
+/// The label and the time per loop joint of a chain of `bodies` (bodies - 1 loop joints).
+void report_per_loop_joint(benchmark::State& state, const Model& model, int bodies) {
+  state.SetLabel(fmt::format("{} loop joints, {} rows",
+                             joint_type_name(canonical_joint_type(loop_kinds[state.range(0)])),
+                             model.num_constraint_rows));
+  state.counters["per_joint_ns"] = benchmark::Counter(
+      (bodies - 1) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
 
 void jacobian_per_loop_joint(benchmark::State& state) {
   constexpr int bodies = 16;
@@ -120,9 +128,7 @@ void jacobian_per_loop_joint(benchmark::State& state) {
     constraint_jacobian(model, data, J);
     benchmark::ClobberMemory();
   }
-  state.SetLabel(fmt::format("{} loop joints, {} rows", loop_kind_names[state.range(0)], model.num_constraint_rows));
-  state.counters["per_joint_ns"] = benchmark::Counter(
-      (bodies - 1) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  report_per_loop_joint(state, model, bodies);
 }
 BENCHMARK(jacobian_per_loop_joint)->DenseRange(0, 5);
 
@@ -139,9 +145,7 @@ void gamma_per_loop_joint(benchmark::State& state) {
     constraint_bias(model, data, 0.0, gamma);
     benchmark::DoNotOptimize(gamma.data());
   }
-  state.SetLabel(fmt::format("{} loop joints, {} rows", loop_kind_names[state.range(0)], model.num_constraint_rows));
-  state.counters["per_joint_ns"] = benchmark::Counter(
-      (bodies - 1) * 1e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  report_per_loop_joint(state, model, bodies);
 }
 BENCHMARK(gamma_per_loop_joint)->DenseRange(0, 5);
 

@@ -69,6 +69,18 @@ std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const st
   return std::make_shared<const TimeFunction>(name, position, velocity, acceleration, expressions.parameters());
 }
 
+std::shared_ptr<const TimeFunction> read_time_expression(const NodeReader& key, const std::string& name,
+                                                         const ExpressionContext& expressions,
+                                                         const std::string& owner, const std::string& expected) {
+  if (!key.node().is_scalar()) key.fail(expected);
+  try {
+    return std::make_shared<const TimeFunction>(name, key.node().scalar, std::nullopt, std::nullopt,
+                                                expressions.parameters(), owner);
+  } catch (const std::invalid_argument& e) {
+    key.fail(key.node().describe() + " (" + e.what() + ")", expected);
+  }
+}
+
 namespace {
 
 /// The times at which a case's expressions of t are evaluated before the run: the
@@ -184,9 +196,16 @@ void check_motions_over_run(const CaseDefinition& definition, const ExpressionCo
       }
     }
   }
-  for (const ForceDefinition& force : definition.forces)
+  for (const ForceDefinition& force : definition.forces) {
+    const std::string& path = definition.item_paths.at(force.name);
     if (const auto* torque = std::get_if<JointTorqueDefinition>(&force.kind))
-      check_finite_over_run(*torque->torque, false, times, definition, definition.item_paths.at(force.name) + ".torque");
+      check_finite_over_run(*torque->torque, false, times, definition, path + ".torque");
+    if (const auto* load = std::get_if<BodyLoadDefinition>(&force.kind))
+      for (const auto& [key, components] : {std::pair{"force", &load->force}, std::pair{"moment", &load->moment}})
+        for (int k = 0; k < 3; ++k)
+          if ((*components)[k])
+            check_finite_over_run(*(*components)[k], false, times, definition, fmt::format("{}.{}[{}]", path, key, k));
+  }
 }
 
 }  // namespace heavesim

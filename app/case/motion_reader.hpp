@@ -20,7 +20,15 @@ namespace heavesim {
 std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const std::string& name,
                                                 const ExpressionContext& expressions);
 
-/// Every expression of t in the case -- each driver's motion, each joint torque --
+/// The expression of t at `key` (a scalar) with no derivatives: a joint torque, a load
+/// component. Parsed here, once, so that a bad expression is bad input at its key, not a
+/// failure mid-run. `owner` names what it belongs to in diagnoses ("joint torque").
+std::shared_ptr<const TimeFunction> read_time_expression(const NodeReader& key, const std::string& name,
+                                                         const ExpressionContext& expressions,
+                                                         const std::string& owner, const std::string& expected);
+
+/// Every expression of t in the case -- each driver's motion, each joint torque, each
+/// body load component --
 /// evaluated over the run; a driver's given derivatives compared with the exact ones.
 /// `drivers` is the case's drivers section (the items in definition.drivers' order).
 void check_motions_over_run(const CaseDefinition& definition, const ExpressionContext& expressions,

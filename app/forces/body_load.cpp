@@ -1,14 +1,11 @@
 #include "app/forces/body_load.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
-#include <fmt/format.h>
-
+#include "app/case/motion_reader.hpp"
 #include "app/scene/scene_build_context.hpp"
 #include "kernel/elements/body_point.hpp"
 #include "kernel/elements/force_element.hpp"
-#include "kernel/math/numerical_error.hpp"
 
 namespace heavesim {
 namespace {
@@ -77,17 +74,9 @@ BodyLoadDefinition::Components read_components(const NodeReader& item, const std
   if (!list) return components;
   const std::vector<NodeReader> entries = list->node().is_sequence() ? list->items() : std::vector<NodeReader>{};
   if (entries.size() != 3) list->fail(list->node().describe(), expected_components);
-  for (int k = 0; k < 3; ++k) {
-    const NodeReader& entry = entries[k];
-    if (!entry.node().is_scalar()) entry.fail(expected_components);
-    // Parsed here, once, so that a bad expression is bad input at its key.
-    try {
-      components[k] = std::make_shared<const TimeFunction>(item["name"].text(), entry.node().scalar, std::nullopt,
-                                                           std::nullopt, item.expressions().parameters(), "body load");
-    } catch (const std::invalid_argument& e) {
-      entry.fail(entry.node().describe() + " (" + e.what() + ")", "an expression of t such as 0, 1e4 or 2e3*sin(t)");
-    }
-  }
+  for (int k = 0; k < 3; ++k)
+    components[k] = read_time_expression(entries[k], item["name"].text(), item.expressions(), "body load",
+                                         expected_components);
   return components;
 }
 
@@ -107,20 +96,7 @@ BodyLoadDefinition BodyLoadDefinition::read(const NodeReader& item, const CaseDe
 }
 
 void BodyLoadDefinition::build(const std::string& name, SceneBuildContext& context) const {
-  // Every component finite over the run (1000 points and t_end): bad input at its key
-  // rather than a numerical failure when the run reaches it.
-  const SolverSettings& solver = context.definition.solver;
-  for (const auto& [key, components] : {std::pair{"force", &force}, std::pair{"moment", &moment}})
-    for (int k = 0; k < 3; ++k) {
-      if (!(*components)[k]) continue;
-      try {
-        for (int i = 0; i <= 1000; ++i) (*components)[k]->position(solver.t_start + (solver.t_end - solver.t_start) * i / 1000.0);
-      } catch (const NumericalError& error) {
-        throw context.error(name, fmt::format("{}[{}]", key, k), fmt::format("{} at t = {:.6g} s", error.what(), error.time()),
-                            fmt::format("an expression of t that is finite over the whole run, t = {:g} .. {:g} s",
-                                        solver.t_start, solver.t_end));
-      }
-    }
+  // Every component was checked finite over the run at load (check_motions_over_run).
   const BodyPoint point_on_body = context.body_point(name, "body", body, point);
   const Matrix3 R_link_body = body == ModelBuilder::ground_name
                                   ? Matrix3::Identity()

@@ -1,9 +1,9 @@
 #include "app/forces/joint_torque.hpp"
 
 #include <memory>
-#include <stdexcept>
 
 #include "app/case/time_function.hpp"
+#include "app/case/motion_reader.hpp"
 #include "app/scene/scene_build_context.hpp"
 #include "kernel/elements/joint_torque.hpp"
 
@@ -30,15 +30,8 @@ JointTorqueDefinition JointTorqueDefinition::read(const NodeReader& item, const 
   item.expect_section(type);
   def.joint = item["joint"].text();
   def.coordinate = static_cast<int>(item.optional("coordinate") ? item["coordinate"].integer() : 0);
-  const NodeReader torque = item["torque"];
-  if (!torque.node().is_scalar()) torque.fail(expected_torque);
-  // Parsed here, once, so that a bad expression is bad input at its key, not a failure mid-run.
-  try {
-    def.torque = std::make_shared<const TimeFunction>(item["name"].text(), torque.node().scalar, std::nullopt,
-                                                      std::nullopt, item.expressions().parameters(), "joint torque");
-  } catch (const std::invalid_argument& e) {
-    torque.fail(torque.node().describe() + " (" + e.what() + ")", expected_torque);
-  }
+  def.torque = read_time_expression(item["torque"], item["name"].text(), item.expressions(), "joint torque",
+                                    expected_torque);
   return def;
 }
 

@@ -254,11 +254,11 @@ class Parser {
         have_system = true;
         parse_system(token);
       } else if (word == "body") {
-        parse_body(token);
+        parse_body();
       } else if (word == "triad") {
-        parse_triad(token);
+        parse_triad();
       } else if (word == "driver") {
-        parse_driver(token);
+        parse_driver();
       } else if (joint_types().count(word)) {
         parse_joint(token, joint_types().at(word));
       } else if (lexer_.peek().kind == TokenKind::word && lower(lexer_.peek().text) == "joint") {
@@ -436,6 +436,30 @@ class Parser {
                "; bodies, triads, joints and drivers share one name space)");
   }
 
+  /// The start of a named statement (BODY, triad, joint, driver): its name, declared in
+  /// the one name space, and the '{' of its block. `statement` is what errors call it
+  /// before the name is known, `noun` what the name names, `kind` the path's prefix.
+  struct NamedBlock {
+    Token name_token;
+    std::string name, path;
+    Token opening;
+  };
+  NamedBlock named_block(const std::string& statement, const std::string& noun, const std::string& kind) {
+    NamedBlock block{lexer_.take(), "", "", Token{}};
+    block.name = name(block.name_token, statement, "the " + noun + "'s name");
+    block.path = kind + " " + block.name;
+    declare(block.name, block.name_token.location, block.path);
+    block.opening = open_block(block.path);
+    return block;
+  }
+
+  /// An item key the statement does not have: the did-you-mean among `keys`.
+  [[noreturn]] void unknown_item(const Token& first, const std::string& path, const std::string& key,
+                                 const std::vector<std::string>& keys, const std::string& statement) const {
+    const std::string expected = "a " + statement + " item: " + join(keys);
+    fail(first.location, path, "'" + key + "'", suggest(key, keys, expected));
+  }
+
   void parse_system(const Token& keyword) {
     SystemSettings& system = model_.system;
     system.location = keyword.location;
@@ -456,7 +480,7 @@ class Parser {
       }
       const auto member = numbers.find(key);
       if (member == numbers.end())
-        fail(first.location, path, "'" + key + "'", suggest(key, keys, "a SYSTEM item: " + join(keys)));
+        unknown_item(first, path, key, keys, "SYSTEM");
       const std::string item_path = path + "." + key;
       expect_equals(item_path, key);
       const Token value_token = lexer_.peek();
@@ -473,15 +497,11 @@ class Parser {
            fmt::format("an ending time after the starting time {} s", system.starting_time.value_or(0.0)));
   }
 
-  void parse_body(const Token& keyword) {
+  void parse_body() {
+    const auto [name_token, body_name, path, opening] = named_block("BODY", "body", "BODY");
     Body body;
-    body.location = keyword.location;
-    const Token name_token = lexer_.take();
-    body.name = name(name_token, "BODY", "the body's name");
+    body.name = body_name;
     body.location = name_token.location;
-    const std::string path = "BODY " + body.name;
-    declare(body.name, name_token.location, path);
-    const Token opening = open_block(path);
     const std::vector<std::string> keys{"ground", "center of gravity", "par"};
     while (next_item(path, opening)) {
       const auto [key, first] = item_key(path, "a BODY item: " + join(keys));
@@ -490,7 +510,7 @@ class Parser {
         continue;
       }
       if (key != "center of gravity" && key != "par")
-        fail(first.location, path, "'" + key + "'", suggest(key, keys, "a BODY item: " + join(keys)));
+        unknown_item(first, path, key, keys, "BODY");
       const std::string item_path = path + "." + key;
       expect_equals(item_path, key);
       if (key == "par") body.par = triple(item_path);
@@ -523,20 +543,16 @@ class Parser {
            "the par triple's first point equal to the " + origin_key);
   }
 
-  void parse_triad(const Token& keyword) {
+  void parse_triad() {
+    const auto [name_token, triad_name, path, opening] = named_block("triad", "triad", "triad");
     Triad triad;
-    const Token name_token = lexer_.take();
-    triad.name = name(name_token, "triad", "the triad's name");
+    triad.name = triad_name;
     triad.location = name_token.location;
-    (void)keyword;
-    const std::string path = "triad " + triad.name;
-    declare(triad.name, name_token.location, path);
-    const Token opening = open_block(path);
     const std::vector<std::string> keys{"associated body", "origin", "par"};
     while (next_item(path, opening)) {
       const auto [key, first] = item_key(path, "a triad item: " + join(keys));
       if (std::find(keys.begin(), keys.end(), key) == keys.end())
-        fail(first.location, path, "'" + key + "'", suggest(key, keys, "a triad item: " + join(keys)));
+        unknown_item(first, path, key, keys, "triad");
       const std::string item_path = path + "." + key;
       expect_equals(item_path, key);
       if (key == "par") {
@@ -562,12 +578,10 @@ class Parser {
     const Token joint_word = lexer_.take();
     if (joint_word.kind != TokenKind::word || lower(joint_word.text) != "joint")
       fail(joint_word, type_token.text, "the word 'joint' after the joint type");
-    const Token name_token = lexer_.take();
-    joint.name = name(name_token, "joint", "the joint's name");
+    const auto [name_token, joint_name, path, opening] =
+        named_block("joint", "joint", std::string(joint_type_name(type)) + " joint");
+    joint.name = joint_name;
     joint.location = name_token.location;
-    const std::string path = std::string(joint_type_name(type)) + " joint " + joint.name;
-    declare(joint.name, name_token.location, path);
-    const Token opening = open_block(path);
     int count = 0;
     while (next_item(path, opening, true)) {
       const auto [key, first] = item_key(path, "triad = <triad>");
@@ -585,15 +599,11 @@ class Parser {
     model_.joints.push_back(std::move(joint));
   }
 
-  void parse_driver(const Token& keyword) {
-    (void)keyword;
+  void parse_driver() {
+    const auto [name_token, driver_name, path, opening] = named_block("driver", "driver", "driver");
     Driver driver;
-    const Token name_token = lexer_.take();
-    driver.name = name(name_token, "driver", "the driver's name");
+    driver.name = driver_name;
     driver.location = name_token.location;
-    const std::string path = "driver " + driver.name;
-    declare(driver.name, name_token.location, path);
-    const Token opening = open_block(path);
     const std::string expected = "<body or triad>.<x|y|z> = <expression of TIME>";
     const Token target = lexer_.take();
     driver.target = name(target, path, expected);

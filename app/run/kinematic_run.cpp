@@ -17,14 +17,11 @@ NumericalError unreachable_position(MultibodySystem& system, double t, const Kin
                                  "step {:.3g})",
                                  t, point.equation_residual, point.newton_iterations, settings.equation_tolerance,
                                  settings.solution_tolerance, point.last_step);
-  if (!loss.empty()) what += "; " + loss.what;
-  return NumericalError(t, what,
-                        !loss.suggestion.empty()
-                            ? loss.suggestion
-                            : "the drivers ask for a position the mechanism cannot take (beyond a loop's reach or "
-                              "through a dead centre): check the drivers' position expressions and the loop "
-                              "geometry; a finer output.interval helps only where the motion is fast between "
-                              "samples");
+  return loss.explain(t, what,
+                      "the drivers ask for a position the mechanism cannot take (beyond a loop's reach or "
+                      "through a dead centre): check the drivers' position expressions and the loop "
+                      "geometry; a finer output.interval helps only where the motion is fast between "
+                      "samples");
 }
 
 }  // namespace

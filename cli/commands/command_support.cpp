@@ -27,4 +27,17 @@ void create_parent_directory(const std::string& path, const char* what) {
   if (error) throw OutputError(directory.string(), std::string("cannot create the directory for the ") + what, error.message());
 }
 
+void record_failure(ResultFile& file, const NumericalError& error) {
+  file.set_attribute("/", "failure_time", error.time());
+  file.set_attribute("/", "failure", std::string(error.what()));
+  file.set_attribute("/", "failure_suggestion", error.suggestion());
+}
+
+std::string prepare_result_path(const std::string& requested, const std::string& case_name,
+                                const std::string& suffix) {
+  const std::string path = requested.empty() ? "results/" + case_name + suffix + ".h5" : requested;
+  create_parent_directory(path, "result file");
+  return path;
+}
+
 }  // namespace heavesim

@@ -10,6 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "app/output/result_file.hpp"
+#include "kernel/math/numerical_error.hpp"
+
 namespace heavesim {
 
 /// The signal that asked the current command to stop (0: none).
@@ -81,5 +84,14 @@ int stopped_before_the_run(const std::string& case_name);
 
 /// The directory of `path`, created if missing; an OutputError (exit 1) if it cannot be.
 void create_parent_directory(const std::string& path, const char* what);
+
+/// Marks `file` as failed by `error`: root attributes failure_time, failure and
+/// failure_suggestion (docs/result-file.md).
+void record_failure(ResultFile& file, const NumericalError& error);
+
+/// A command's result file: `requested` (-o), else results/<case name><suffix>.h5, with
+/// its directory created: a result that cannot be written is known before any work.
+std::string prepare_result_path(const std::string& requested, const std::string& case_name,
+                                const std::string& suffix = "");
 
 }  // namespace heavesim

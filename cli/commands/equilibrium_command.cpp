@@ -13,6 +13,7 @@
 #include "app/output/output_error.hpp"
 #include "app/output/recorder.hpp"
 #include "app/scene/scene.hpp"
+#include "cli/commands/command_support.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/result_metadata.hpp"
 #include "io/hdf5/hdf5_handle.hpp"
@@ -98,15 +99,12 @@ int equilibrium_command(const EquilibriumOptions& options) {
   hdf5::skip_library_exit_cleanup();
   CaseDefinition definition = load_case(options.case_path, options.overrides);
   definition.initial_static = true;
-  const std::string output_path =
-      options.output_path.empty() ? "results/" + definition.name + "_equilibrium.h5" : options.output_path;
+  const std::string output_path = prepare_result_path(options.output_path, definition.name, "_equilibrium");
   Scene scene = build_scene(definition);
   const Model& model = *scene.model;
   const double t = definition.solver.t_start;
 
   // The one sample: the rest state with its reactions.
-  if (const std::filesystem::path directory = std::filesystem::path(output_path).parent_path(); !directory.empty())
-    std::filesystem::create_directories(directory);
   {
     ResultFile file(output_path, 1);
     write_result_metadata(file, definition);

@@ -96,9 +96,7 @@ int kinematics_command(const RunOptions& options) {
   const StopSignals signals;
   const CaseDefinition definition = load_case(options.case_path, options.overrides, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
-  const std::string output_path =
-      options.output_path.empty() ? "results/" + definition.name + ".h5" : options.output_path;
-  create_parent_directory(output_path, "result file");
+  const std::string output_path = prepare_result_path(options.output_path, definition.name);
   Scene scene = build_scene(definition);
   const Model& model = *scene.model;
   MultibodySystem& system = *scene.system;
@@ -182,9 +180,7 @@ int kinematics_command(const RunOptions& options) {
     } catch (const NumericalError& error) {
       progress.clear();
       if (csv) csv->close();
-      file.set_attribute("/", "failure_time", error.time());
-      file.set_attribute("/", "failure", std::string(error.what()));
-      file.set_attribute("/", "failure_suggestion", error.suggestion());
+      record_failure(file, error);
       finish(false);
       fmt::print(stderr,
                  "heavesim: numerical failure in the kinematic analysis of case '{}' at t = {:.6g} s: {}\n"

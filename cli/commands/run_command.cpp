@@ -42,11 +42,8 @@ int run_command(const RunOptions& options) {
   const CaseDefinition definition = load_case(options.case_path, options.overrides, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
 
-  const std::string output_path =
-      options.output_path.empty() ? "results/" + definition.name + ".h5" : options.output_path;
-  // The output place is checked (created) before the scene is built: a result that
-  // cannot be written is known before any work is done.
-  create_parent_directory(output_path, "result file");
+  // The output place is checked (created) before the scene is built.
+  const std::string output_path = prepare_result_path(options.output_path, definition.name);
   // The scene is built (and the run-size limits checked, app/scene/run_size.hpp) before
   // the file reserves room for every sample.
   Scene scene = build_scene(definition);
@@ -84,9 +81,7 @@ int run_command(const RunOptions& options) {
     } catch (const NumericalError& error) {
       progress.clear();
       if (csv) csv->close();
-      file.set_attribute("/", "failure_time", error.time());
-      file.set_attribute("/", "failure", std::string(error.what()));
-      file.set_attribute("/", "failure_suggestion", error.suggestion());
+      record_failure(file, error);
       close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(),
                        integrator->time() - solver.t_start);
       fmt::print(stderr,

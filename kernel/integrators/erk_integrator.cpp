@@ -124,15 +124,13 @@ void ErkIntegrator::fail(int flag, double t_out, double t_reached) {
   N_VDestroy(errors);
   N_VDestroy(weights);
   const StateDiagnosis note = system_.state_note(t_reached, last_state);
-  if (!note.empty()) what += "; " + note.what;
-  throw NumericalError(t_reached, what,
-                       !note.suggestion.empty() ? note.suggestion
-                       : !note.empty()          ? "solver.integrator: hht carries a mechanism through singular configurations"
-                       : flag == ARK_TOO_MUCH_WORK
-                           ? "too many steps: the problem may be stiff (use solver.integrator: ida) or "
-                             "solver.max_steps too low for the output interval"
-                           : "step-size collapse at that component: look for a discontinuous or unstable force "
-                             "element acting there, or loosen the tolerances");
+  throw note.explain(t_reached, what,
+                     !note.empty() ? "solver.integrator: hht carries a mechanism through singular configurations"
+                     : flag == ARK_TOO_MUCH_WORK
+                         ? "too many steps: the problem may be stiff (use solver.integrator: ida) or "
+                           "solver.max_steps too low for the output interval"
+                         : "step-size collapse at that component: look for a discontinuous or "
+                           "unstable force element acting there, or loosen the tolerances");
 }
 
 IntegratorStatistics ErkIntegrator::statistics() const {

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <string>
 
+#include "kernel/math/numerical_error.hpp"
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
@@ -21,6 +22,12 @@ struct StateDiagnosis {
   std::string what;
   std::string suggestion;
   bool empty() const { return what.empty(); }
+  /// The failure at t described by `failure`, with this diagnosis appended when there is
+  /// one; its suggestion when it has one, else `fallback` (the remedy the caller knows).
+  NumericalError explain(double t, std::string failure, const std::string& fallback) const {
+    if (!empty()) failure += "; " + what;
+    return NumericalError(t, failure, !suggestion.empty() ? suggestion : fallback);
+  }
 };
 
 /// The fastest mode of the equations linearized at a state: what limits an explicit

@@ -112,32 +112,42 @@ void MultibodySystem::check_constraint_solution(double t) {
                      describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
                      std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
                      std::to_string(model_->num_constraint_rows) + ")";
-  if (!loss.empty()) what += "; " + loss.what;
-  throw NumericalError(t, what,
-                       !loss.suggestion.empty()
-                           ? loss.suggestion
-                           : "the mechanism has reached a locked or singular position: check the loop geometry, "
-                             "the initial state and the applied loads. A mechanism that passes through such a "
-                             "position (a four-bar lying flat) is carried through by the index-3 integrator "
-                             "(solver.integrator: hht); one that cannot move on (a loop stretched to its reach, a "
-                             "dead centre) stops here with any integrator");
+  throw loss.explain(t, what,
+                     "the mechanism has reached a locked or singular position: check the loop geometry, "
+                     "the initial state and the applied loads. A mechanism that passes through such a "
+                     "position (a four-bar lying flat) is carried through by the index-3 integrator "
+                     "(solver.integrator: hht); one that cannot move on (a loop stretched to its reach, a "
+                     "dead centre) stops here with any integrator");
 }
 
 void MultibodySystem::spread_multipliers_over_every_row() {
   // The constraint force f = J_used^T lambda is unique; the multipliers reported are the
-  // minimum-norm ones over every row, lambda = S^+ J M^-1 f with S = J M^-1 J^T: they
-  // satisfy S lambda = S lambda_used, and S^+ S is the projection onto range(J), so this
-  // is what a solve over every row gives (constrained_dynamics.hpp), whichever rows were
-  // set aside.
-  const Model& model = *model_;
+  // minimum-norm ones over every row for it, whichever rows were set aside.
   constraint_force_.noalias() = data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
-  constraint_jacobian(model, data_, data_.constraint_jacobian);
+  constraint_jacobian(*model_, data_, data_.constraint_jacobian);
+  minimum_norm_multipliers(constraint_force_);
+}
+
+void MultibodySystem::minimum_norm_multipliers(const VectorX& generalized_force) {
+  // lambda = S^+ J M^-1 f with S = J M^-1 J^T: the normal equations of min |J^T lambda - f|
+  // in the metric M^-1. They satisfy S lambda = J M^-1 f, and S^+ S is the projection onto
+  // range(J), so for f in the range of J^T these are the exact multipliers of the KKT
+  // system (constrained_dynamics.hpp), minimum-norm over redundant rows.
   data_.kkt_minv_jt = data_.constraint_jacobian.transpose();
   data_.mass_matrix_cholesky.solveInPlace(data_.kkt_minv_jt);
   data_.kkt_schur.noalias() = data_.constraint_jacobian * data_.kkt_minv_jt;
-  data_.kkt_rhs.noalias() = data_.kkt_minv_jt.transpose() * constraint_force_;
+  data_.kkt_rhs.noalias() = data_.kkt_minv_jt.transpose() * generalized_force;
   data_.kkt_solver.compute(data_.kkt_schur, kkt_regularization);
   data_.kkt_solver.solve(data_.kkt_rhs, data_.constraint_multipliers);
+}
+
+void MultibodySystem::compute_joint_reactions() {
+  total_loads_ = forces_.external_force_world;
+  if (model_->has_constraints()) {
+    tau_total_ = forces_.joint_force;
+    add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
+  }
+  compute_joint_wrenches(*model_, data_, total_loads_);
 }
 
 void MultibodySystem::element_state_derivatives(double t, const VectorX& y, const Data& data,
@@ -162,12 +172,7 @@ void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reaction
   compute_accelerations(t, y);
   if (!compute_reactions) return;
   if (data_.constraint_rows_set_aside) spread_multipliers_over_every_row();
-  total_loads_ = forces_.external_force_world;
-  if (model_->has_constraints()) {
-    tau_total_ = forces_.joint_force;
-    add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
-  }
-  compute_joint_wrenches(*model_, data_, total_loads_);
+  compute_joint_reactions();
 }
 
 void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const VectorX& qdd, bool compute_reactions) {
@@ -180,27 +185,15 @@ void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const Vect
   data_.stages.accelerations_computed();
   dynamic_residual_ = data_.tau - forces_.joint_force;
   if (model.has_constraints()) {
-    // lambda = S^+ J M^-1 f, S = J M^-1 J^T: the normal equations of min |J^T lambda - f|
-    // in the metric M^-1; for a dynamically consistent motion (f in the range of J^T) the
-    // exact multipliers of the KKT system (constrained_dynamics.hpp).
+    // The multipliers that best supply f = M qdd + C - tau (exact for a dynamically
+    // consistent motion, f in the range of J^T); what remains is the dynamic residual.
     constraint_jacobian(model, data_, data_.constraint_jacobian);
     data_.mass_matrix_cholesky.compute(mass_matrix(model, data_));
-    data_.kkt_minv_jt = data_.constraint_jacobian.transpose();
-    data_.mass_matrix_cholesky.solveInPlace(data_.kkt_minv_jt);
-    data_.kkt_schur.noalias() = data_.constraint_jacobian * data_.kkt_minv_jt;
-    data_.kkt_rhs.noalias() = data_.kkt_minv_jt.transpose() * dynamic_residual_;
-    data_.kkt_solver.compute(data_.kkt_schur, kkt_regularization);
-    data_.kkt_solver.solve(data_.kkt_rhs, data_.constraint_multipliers);
+    minimum_norm_multipliers(dynamic_residual_);
     dynamic_residual_.noalias() -= data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
   }
   if (!data_.constraint_multipliers.allFinite()) report_non_finite(t, dynamic_residual_, "constraint force");
-  if (!compute_reactions) return;
-  total_loads_ = forces_.external_force_world;
-  if (model.has_constraints()) {
-    tau_total_ = forces_.joint_force;
-    add_constraint_loads(model, data_, data_.constraint_multipliers, total_loads_, tau_total_);
-  }
-  compute_joint_wrenches(model, data_, total_loads_);
+  if (compute_reactions) compute_joint_reactions();
 }
 
 std::string MultibodySystem::describe_state_component(int index) const {

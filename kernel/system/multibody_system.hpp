@@ -124,6 +124,12 @@ class MultibodySystem {
   /// With rows set aside (Data::constraint_row_used), the minimum-norm multipliers over
   /// every row for the same constraint force, for reporting.
   void spread_multipliers_over_every_row();
+  /// The minimum-norm multipliers (in the metric M^-1) whose force J^T lambda best equals
+  /// `generalized_force` (nv), from data_.constraint_jacobian (every row) and the current
+  /// factor of M; into data_.constraint_multipliers.
+  void minimum_norm_multipliers(const VectorX& generalized_force);
+  /// Joint wrenches from the applied forces and the constraint loads of the multipliers.
+  void compute_joint_reactions();
 
   std::shared_ptr<const Model> model_;
   SystemSettings settings_;

@@ -38,14 +38,12 @@ void OdeForm::project(double t, VectorX& y) {
       // the loop beyond its reach) are the cause, not the step. The projection has
       // already failed, so a weaker loss (1e-2; with a driver, any) is the explanation.
       const StateDiagnosis loss = system_.constraint_loss(1e-2);
-      if (!loss.empty()) what += "; " + loss.what;
-      throw NumericalError(t, what,
-                           !loss.suggestion.empty() ? loss.suggestion
-                           : !loss.empty()
-                               ? "the loops are at a singular configuration: solver.integrator: hht carries a "
-                                 "mechanism through one; one that cannot move on (a dead centre) stops here"
-                               : "the step was too large for the loop to be restored: reduce solver.step or the "
-                                 "tolerances, or check for a singular configuration");
+      throw loss.explain(t, what,
+                         !loss.empty()
+                             ? "the loops are at a singular configuration: solver.integrator: hht carries a "
+                               "mechanism through one; one that cannot move on (a dead centre) stops here"
+                             : "the step was too large for the loop to be restored: reduce solver.step or the "
+                               "tolerances, or check for a singular configuration");
     }
     y.segment(model.nq, model.nv) = v_;
     choose_constraint_rows();
