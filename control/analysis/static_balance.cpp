@@ -2,8 +2,10 @@
 
 #include <cmath>
 
+#include <Eigen/QR>
 #include <fmt/format.h>
 
+#include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/generalized_force.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
@@ -42,7 +44,27 @@ double static_stroke_load(const Model& model, Data& data, const MultibodySystem&
     element->apply(t0, model, data, z, others);
   }
   needed -= generalized_force(model, data, others);
-  return unit.dot(needed) / unit.squaredNorm();
+  if (model.num_constraint_rows == 0) return unit.dot(needed) / unit.squaredNorm();
+
+  // With loops and drivers the constraints carry part of the load: needed = unit F + J^T lambda.
+  // The least-squares (F, lambda) of minimum norm (complete orthogonal decomposition, so
+  // redundant rows are allowed); set-up code, so the matrices are allocated here.
+  MatrixX jacobian(model.num_constraint_rows, model.nv);
+  constraint_jacobian(model, data, jacobian);
+  MatrixX loads(model.nv, 1 + model.num_constraint_rows);
+  loads << unit, jacobian.transpose();
+  const double threshold = 1e-10;
+  Eigen::CompleteOrthogonalDecomposition<MatrixX> with_stroke(loads);
+  with_stroke.setThreshold(threshold);
+  Eigen::CompleteOrthogonalDecomposition<MatrixX> constraints_only(jacobian.transpose());
+  constraints_only.setThreshold(threshold);
+  // A stroke the constraints hold (unit in the range of J^T) has no load of its own.
+  if (with_stroke.rank() == constraints_only.rank())
+    throw ParameterError("gas_pressure",
+                         "'balance' on a stroke that the loop constraints or drivers hold: the constraints take "
+                         "whatever load acts along it, so no gas pressure follows from statics",
+                         "an explicit gas_pressure, or a stroke the constraints leave free");
+  return with_stroke.solve(needed)[0];
 }
 
 double apparent_stroke_mass(const MatrixX& mass_matrix, const VectorX& unit) {

@@ -16,6 +16,10 @@ VectorX unit_stroke_generalized_force(const StrokeAxis& axis, const Model& model
 /// needed = RNEA(q0, 0, 0) - Q_elements (the generalized force that holds q0), the
 /// least-squares load along `unit` (the stroke's unit generalized force) is
 /// unit . needed / |unit|^2; for a joint-form stroke exactly that coordinate's load.
+/// With constraint rows (loop joints, couplers, drivers held at t0) part of the load
+/// goes through them: needed = unit F + J^T lambda, solved for (F, lambda) in the
+/// least-squares, minimum-norm sense (Haug 1989, sec. 6.4: the static multipliers).
+/// Throws ParameterError("gas_pressure") when the constraints hold the stroke itself.
 double static_stroke_load(const Model& model, Data& data, const MultibodySystem& system, double t0,
                           const VectorX& q0, const VectorX& unit);
 

@@ -145,5 +145,23 @@ TEST(Statics, EquilibriumCommandWritesOneSampleAndAFragmentARunStaysAtRestFrom) 
   EXPECT_LT(drift, 1e-9);
 }
 
+// gas_pressure: balance counts what a loop carries (tests/cases/statics_lever_compensator.yaml):
+// the stroke holds F = m_s g + m_b g c / a (moments about the beam's pin), so
+// p0 = p_atm + F / A at the initial stroke s = 0 (V = V0: mid-stroke), and the initial
+// state is then the rest state. Counting the stroke's own coordinate only (m_s g) would
+// let the beam fall onto the end stop.
+TEST(Statics, BalancePressureCountsTheLoadALoopBringsToTheStroke) {
+  const Scene scene = rest_scene("tests/cases/statics_lever_compensator.yaml", {});
+  constexpr double beam_mass = 2000.0, slider_mass = 300.0, c = 1.5, a = 0.6, area = 0.05;
+  const double stroke_force = slider_mass * g + beam_mass * g * c / a;  // N
+  const double atmospheric = 101325.0;                                  // Pa, the default
+  ASSERT_EQ(scene.summarised.pneumatic_compensators.size(), 1u);
+  const double pressure = scene.summarised.pneumatic_compensators[0].element->parameters().gas_pressure;
+  EXPECT_NEAR(pressure, atmospheric + stroke_force / area, 1e-9 * pressure);
+  // The equilibrium from the assembled guess stays where it started.
+  EXPECT_NEAR(scene.initial_state[0], 0.0, 1e-10);  // pin, rad
+  EXPECT_NEAR(scene.initial_state[1], 0.0, 1e-10);  // stroke, m
+}
+
 }  // namespace
 }  // namespace heavesim

@@ -67,6 +67,76 @@ TEST(StaticBalance, StaticLoadIsTheCarriedWeightLessTheOtherLoads) {
   EXPECT_NEAR(static_stroke_load(*rig.model, rig.data, system, 0.0, rig.q0, unit), load_mass * g - 1e5, 1e-6);
 }
 
+// A lever carried through a loop: a beam of mass m_b pinned to the ground at the origin
+// (revolute about y), its CoM at x = c, rests horizontally on a vertical rod (a distance
+// constraint, length d) whose lower end is on a slider of mass m_s on a vertical stroke
+// joint under x = a. Hand statics: moments about the pin, m_b g c = T a, so the rod
+// carries T = m_b g c / a and the stroke F = m_s g + T. The stroke's own coordinate sees
+// only m_s g: the rest arrives through the loop.
+TEST(StaticBalance, StaticLoadCountsWhatTheLoopsCarry) {
+  constexpr double beam_mass = 2000.0, slider_mass = 300.0, c = 1.5, a = 0.6, d = 2.0;  // kg, kg, m, m, m
+  ModelBuilder builder;
+  builder.set_gravity(Vector3(0.0, 0.0, -g));
+  builder.add_body({"beam", Inertia(beam_mass, Vector3(c, 0.0, 0.0), Matrix3::Identity() * 50.0), std::nullopt});
+  builder.add_body({"slider", Inertia(slider_mass, Vector3::Zero(), Matrix3::Identity() * 5.0), std::nullopt});
+  JointDefinition pin;
+  pin.name = "pin";
+  pin.kind = JointKind::revolute;
+  pin.axis = Vector3::UnitY();
+  pin.parent = ModelBuilder::ground_name;
+  pin.child = "beam";
+  builder.add_joint(pin);
+  JointDefinition stroke;
+  stroke.name = "stroke";
+  stroke.kind = JointKind::prismatic;
+  stroke.axis = Vector3::UnitZ();
+  stroke.parent = ModelBuilder::ground_name;
+  stroke.child = "slider";
+  stroke.X_parent_joint = Transform(Matrix3::Identity(), Vector3(a, 0.0, -d));
+  builder.add_joint(stroke);
+  builder.add_distance_constraint({"rod", "slider", "beam", Vector3::Zero(), Vector3(a, 0.0, 0.0), d});
+  const auto model = std::make_shared<const Model>(builder.build());
+  Data data(*model);
+  const VectorX q0 = VectorX::Zero(2);  // beam horizontal, rod vertical and of length d
+  update_positions(*model, data, q0);
+  const StrokeAxis axis = StrokeAxis::on_joint(*model, model->joint_index("stroke"), 0.0);
+  const VectorX unit = unit_stroke_generalized_force(axis, *model, data);
+  MultibodySystem system(model);
+  EXPECT_NEAR(static_stroke_load(*model, data, system, 0.0, q0, unit), slider_mass * g + beam_mass * g * c / a,
+              1e-9 * beam_mass * g);
+}
+
+// A stroke that a driver holds has no static load of its own: the driver takes it.
+TEST(StaticBalance, StrokeHeldByADriverIsRefused) {
+  ModelBuilder builder;
+  builder.set_gravity(Vector3(0.0, 0.0, -g));
+  builder.add_body({"load", Inertia(load_mass, Vector3::Zero(), Matrix3::Identity() * 1e6), std::nullopt});
+  JointDefinition stroke;
+  stroke.name = "stroke";
+  stroke.kind = JointKind::prismatic;
+  stroke.parent = ModelBuilder::ground_name;
+  stroke.child = "load";
+  builder.add_joint(stroke);
+  DriverDefinition hold;
+  hold.name = "hold";
+  hold.joint = "stroke";
+  hold.motion = [](double) { return DriverMotion{}; };
+  builder.add_driver(hold);
+  const auto model = std::make_shared<const Model>(builder.build());
+  Data data(*model);
+  const VectorX q0 = VectorX::Zero(1);
+  update_positions(*model, data, q0);
+  const VectorX unit = unit_stroke_generalized_force(StrokeAxis::on_joint(*model, model->joint_index("stroke"), 0.0), *model, data);
+  MultibodySystem system(model);
+  try {
+    static_stroke_load(*model, data, system, 0.0, q0, unit);
+    ADD_FAILURE() << "no ParameterError";
+  } catch (const ParameterError& error) {
+    EXPECT_EQ(error.field(), "gas_pressure");
+    EXPECT_NE(error.found().find("drivers hold"), std::string::npos) << error.found();
+  }
+}
+
 TEST(StaticBalance, ApparentMassOfAJointStrokeIsItsDiagonalEntry) {
   Rig rig;
   const VectorX unit = unit_stroke_generalized_force(rig.axis, *rig.model, rig.data);
