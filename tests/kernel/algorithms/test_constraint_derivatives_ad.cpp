@@ -521,34 +521,5 @@ TEST_F(ConstraintDerivativesAD, ExpressionConstraintJacobianVelocityTargetAndBia
   }
 }
 
-TEST_F(ConstraintDerivativesAD, ExpressionConstraintRefusesQuaternionAndUnknownCoordinates) {
-  ModelBuilder builder;
-  builder.add_body({"ball", Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  builder.add_body({"sleeve", Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
-  JointDefinition joint;
-  joint.name = "socket", joint.kind = JointKind::spherical, joint.parent = "ground", joint.child = "ball";
-  builder.add_joint(joint);
-  joint.name = "shaft", joint.kind = JointKind::cylindrical, joint.parent = "ball", joint.child = "sleeve";
-  builder.add_joint(joint);
-  const auto function = std::make_shared<const CoordinateExpression>("x - 1", std::vector<std::string>{"x"},
-                                                                     std::map<std::string, double>{});
-  auto field_of_error = [&](ExpressionVariable variable) {
-    ModelBuilder attempt = builder;
-    attempt.add_expression_constraint({"rule", {variable}, function});
-    try {
-      attempt.build();
-    } catch (const ModelError& error) {
-      return error.field() + ": " + error.found();
-    }
-    return std::string("no error");
-  };
-  EXPECT_EQ(field_of_error({"x", "socket", {}}), "variables.x: joint 'socket', a spherical joint");
-  EXPECT_EQ(field_of_error({"x", "hinge", {}}), "variables.x: 'hinge', which is not a joint of the tree");
-  EXPECT_EQ(field_of_error({"x", "shaft", {}}),
-            "variables.x: joint 'shaft', a cylindrical joint with 2 coordinates, without a coordinate");
-  EXPECT_EQ(field_of_error({"x", "shaft", 2}), "variables.x.coordinate: 2");
-  EXPECT_EQ(field_of_error({"x", "shaft", 1}), "no error");
-}
-
 }  // namespace
 }  // namespace heavesim
