@@ -28,7 +28,8 @@ void build_forces(BuildStage stage, SceneBuildContext& context) {
 /// driver declared last in the group, naming the rows it fights; nothing when no such
 /// group holds a driver.
 void reject_over_driven(const CaseDefinition& definition, const Model& model, Data& data) {
-  for (const InconsistentRows& group : inconsistent_rows(model, data, definition.solver.t_start, definition.solver.integrator.constraint_tolerance)) {
+  for (const InconsistentRows& group :
+       inconsistent_rows(model, data, definition.solver.t_start, definition.solver.integrator.constraint_tolerance)) {
     std::vector<int> rows = group.rows;
     rows.push_back(group.dependent);
     const Constraint* driver = nullptr;

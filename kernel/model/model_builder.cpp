@@ -285,9 +285,9 @@ void ModelBuilder::add_constraints(Model& model) const {
     if (count < 1 || count > ExpressionConstraint::max_variables)
       throw constraint_error(def.name, "variables", std::to_string(count) + " variables",
                              "1 to " + std::to_string(ExpressionConstraint::max_variables) + " joint coordinates");
-    if (!def.function || def.function->size() != count)
-      throw constraint_error(def.name, "expression", "a function of " + std::to_string(def.function ? def.function->size() : 0) +
-                                                         " coordinates",
+    const int function_size = def.function ? def.function->size() : 0;
+    if (function_size != count)
+      throw constraint_error(def.name, "expression", "a function of " + std::to_string(function_size) + " coordinates",
                              "a function of its " + std::to_string(count) + " variables");
     for (const ExpressionVariable& variable : def.variables) {
       const std::string field = "variables." + variable.name;
@@ -306,7 +306,8 @@ void ModelBuilder::add_constraints(Model& model) const {
         throw constraint_error(def.name, field,
                                "joint '" + variable.joint + "', a " + joint_type_name(joint.type) + " joint with " +
                                    std::to_string(joint.nv) + " coordinates, without a coordinate",
-                               "{joint: " + variable.joint + ", coordinate: 0 to " + std::to_string(joint.nv - 1) + "}");
+                               "{joint: " + variable.joint + ", coordinate: 0 to " + std::to_string(joint.nv - 1) +
+                                   "}");
       const int coordinate = variable.coordinate.value_or(0);
       if (coordinate < 0 || coordinate >= joint.nv)
         throw constraint_error(def.name, field + ".coordinate", std::to_string(coordinate),

@@ -462,7 +462,8 @@ TEST_F(ConstraintDerivativesAD, ExpressionConstraintJacobianVelocityTargetAndBia
   // revolute's angle a, the prismatic's stroke b and the cylindrical's slide c
   // (coordinate 1), whose columns are v_index 0, 1 and 3.
   ModelBuilder builder;
-  for (const char* body : {"arm", "slider", "sleeve"}) builder.add_body({body, Inertia(1.0, Vector3(0.1, 0, 0), Matrix3::Identity() * 0.1), std::nullopt});
+  for (const char* body : {"arm", "slider", "sleeve"})
+    builder.add_body({body, Inertia(1.0, Vector3(0.1, 0, 0), Matrix3::Identity() * 0.1), std::nullopt});
   JointDefinition joint;
   joint.name = "pivot", joint.kind = JointKind::revolute, joint.parent = "ground", joint.child = "arm";
   builder.add_joint(joint);
