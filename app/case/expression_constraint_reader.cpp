@@ -11,9 +11,25 @@ namespace {
 const char* const expression_expectation = "an expression of the variables' joint coordinates (and t) such as "
                                            "s - 0.2*sin(theta)";
 
+/// The name of a joint of the tree at `reader`; another name is refused there with the
+/// closest joint name as a did-you-mean (the joints are read before the constraints; the
+/// model builder checks the joint's type).
+std::string joint_name(const NodeReader& reader, const CaseDefinition& definition) {
+  const std::string name = reader.text();
+  std::vector<std::string> candidates;
+  for (const JointDefinition& joint : definition.joints) {
+    if (joint.name == name) return name;
+    candidates.push_back(joint.name);
+  }
+  const std::string suggestion = closest_match(name, candidates);
+  reader.fail("'" + name + "', which is not a joint of the tree",
+              (suggestion.empty() ? "" : "'" + suggestion + "' (did you mean it?) or ") +
+                  std::string("the name of a revolute, prismatic, cylindrical or universal joint"));
+}
+
 /// variables.<symbol>: a joint name (its only coordinate) or {joint: NAME, coordinate: K}.
 ExpressionVariable read_variable(const NodeReader& reader, const std::string& symbol,
-                                 const std::map<std::string, double>& parameters) {
+                                 const CaseDefinition& definition, const std::map<std::string, double>& parameters) {
   if (const std::string problem = parameter_name_problem(symbol); !problem.empty())
     reader.fail("variable name '" + symbol + "', " + problem, parameter_name_expectation());
   if (parameters.count(symbol))
@@ -22,10 +38,10 @@ ExpressionVariable read_variable(const NodeReader& reader, const std::string& sy
   variable.name = symbol;
   if (reader.node().is_map()) {
     reader.expect_section("expression_variable");
-    variable.joint = reader["joint"].text();
+    variable.joint = joint_name(reader["joint"], definition);
     if (auto coordinate = reader.optional("coordinate")) variable.coordinate = static_cast<int>(coordinate->integer());
   } else {
-    variable.joint = reader.text();
+    variable.joint = joint_name(reader, definition);
   }
   return variable;
 }
@@ -41,7 +57,7 @@ void read_expression_constraint(const NodeReader& item, const std::string& name,
   if (!variables.node().is_map()) variables.fail("a map of symbol: joint (or symbol: {joint, coordinate})");
   std::vector<std::string> symbols;
   for (const CaseNode::Entry& entry : variables.node().entries) {
-    def.variables.push_back(read_variable(variables[entry.key], entry.key, expressions.parameters()));
+    def.variables.push_back(read_variable(variables[entry.key], entry.key, definition, expressions.parameters()));
     symbols.push_back(entry.key);
   }
   const NodeReader text = item["expression"];

@@ -13,9 +13,10 @@ namespace heavesim {
 /// definition.expression_constraints: its `variables` (a joint name, or {joint,
 /// coordinate}) and its `expression`, parsed here with the case's parameters so that a
 /// syntax error, an unknown symbol, a variable the expression does not read or an
-/// expression that reads no coordinate is bad input at its key. The joints themselves
-/// are checked by the model builder (unknown joint, quaternion coordinates), whose
-/// ModelError names the key `variables.<symbol>`. Throws InputError.
+/// expression that reads no coordinate is bad input at its key; so is a name that is not
+/// a joint of the tree (with a did-you-mean). The joints' types and coordinates are
+/// checked by the model builder, whose ModelError names the key `variables.<symbol>`.
+/// Throws InputError.
 void read_expression_constraint(const NodeReader& item, const std::string& name, CaseDefinition& definition,
                                 const ExpressionContext& expressions);
 
