@@ -125,7 +125,7 @@ void jacobian_per_loop_joint(benchmark::State& state) {
   update_positions(model, data, q);
   MatrixX J = MatrixX::Zero(model.num_constraint_rows, model.nv);
   for (auto _ : state) {
-    constraint_jacobian(model, data, J);
+    constraint_jacobian(model, data, 0.0, J);
     benchmark::ClobberMemory();
   }
   report_per_loop_joint(state, model, bodies);

@@ -88,6 +88,7 @@ struct CaseDefinition {
   std::vector<LoopJointDefinition> loop_joints;
   std::vector<DistanceConstraintDefinition> distance_constraints;
   std::vector<CouplerDefinition> couplers;
+  std::vector<ExpressionConstraintDefinition> expression_constraints;  // constraints[i] of type expression
   std::vector<DriverDefinition> drivers;
   std::vector<ForceDefinition> forces;              // from forces:, in declaration order (app/forces/)
   WaterDefinition water;                            // environment.water_density, water_depth

@@ -13,6 +13,7 @@
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
 #include "app/case/driver_reader.hpp"
+#include "app/case/expression_constraint_reader.hpp"
 #include "app/case/frame_reader.hpp"
 #include "app/case/motion_reader.hpp"
 #include "kernel/math/numerical_error.hpp"
@@ -255,9 +256,10 @@ void read_loop_joints(const NodeReader& section, CaseDefinition& definition, std
   }
 }
 
-void read_constraints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names) {
+void read_constraints(const NodeReader& section, CaseDefinition& definition, std::set<std::string>& names,
+                      const ExpressionContext& expressions) {
   for (const NodeReader& item : section.items()) {
-    const std::string type = item["type"].choice({"distance", "coupler"});
+    const std::string type = item["type"].choice({"distance", "coupler", "expression"});
     const std::string name = read_unique_name(item, names);
     if (type == "distance") {
       item.expect_section("distance");
@@ -269,6 +271,8 @@ void read_constraints(const NodeReader& section, CaseDefinition& definition, std
       if (auto point = item.optional("point_b")) def.point_b = point->vector3_in(length_range);
       def.distance = item["distance"].positive_number(length_range);
       definition.distance_constraints.push_back(std::move(def));
+    } else if (type == "expression") {
+      read_expression_constraint(item, name, definition, expressions);
     } else {
       item.expect_section("coupler");
       CouplerDefinition def;
@@ -518,7 +522,7 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   std::set<std::string> names;  // joints, loop joints, constraints and forces share one name space
   read_joints(root["joints"], definition, names);
   if (auto section = root.optional("loop_joints")) read_loop_joints(*section, definition, names);
-  if (auto section = root.optional("constraints")) read_constraints(*section, definition, names);
+  if (auto section = root.optional("constraints")) read_constraints(*section, definition, names, expressions);
   if (auto section = root.optional("drivers")) read_drivers(*section, definition, names, expressions);
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   read_solver(root["solver"], definition);

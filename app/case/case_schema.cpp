@@ -20,7 +20,7 @@ constexpr KeySpec root_keys[] = {
     {"bodies", "list", "–", "required", "the bodies"},
     {"joints", "list", "–", "required", "the spanning tree (may be empty)"},
     {"loop_joints", "list", "–", "none", "joints that close kinematic loops"},
-    {"constraints", "list", "–", "none", "distance and coupler constraints"},
+    {"constraints", "list", "–", "none", "distance, coupler and expression constraints"},
     {"drivers", "list", "–", "none", "prescribed motion of joint coordinates, body points, distances, angles"},
     {"forces", "list", "–", "none", "force elements"},
     {"solver", "map", "–", "required", "integration settings"},
@@ -184,6 +184,19 @@ constexpr KeySpec coupler_keys[] = {
     {"description", "text", "–", "–", "free text"},
 };
 
+constexpr KeySpec expression_constraint_keys[] = {
+    {"name", "text", "–", "required", "unique"},
+    {"type", "choice", "–", "required", "`expression`"},
+    {"expression", "text", "–", "required", "f(x, t), kept at 0: the variables, t and the case parameters"},
+    {"variables", "map", "–", "required", "symbol: joint name (its only coordinate), or symbol: {joint, coordinate}"},
+    {"description", "text", "–", "–", "free text"},
+};
+
+constexpr KeySpec expression_variable_keys[] = {
+    {"joint", "text", "–", "required", "a revolute, prismatic, cylindrical or universal joint of the tree"},
+    {"coordinate", "number", "–", "its only one", "which of its coordinates (required when it has two)"},
+};
+
 constexpr KeySpec frame_keys[] = {
     {"position", "vector", "m", "`[0, 0, 0]`", "origin of the frame in its body frame"},
     {"orientation", "map", "–", "identity", "see Orientations"},
@@ -250,6 +263,8 @@ constexpr SchemaSection fixed_sections[] = {
     {"orientation", orientation_keys},
     {"distance", distance_keys},
     {"coupler", coupler_keys},
+    {"expression_constraint", expression_constraint_keys},
+    {"expression_variable", expression_variable_keys},
     {"drivers[i]", driver_keys},
     {"absolute_driver", absolute_driver_keys},
     {"distance_driver", distance_driver_keys},

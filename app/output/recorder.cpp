@@ -181,7 +181,7 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
        }});
   add({"/signals/constraint_velocity_residual", 0, "m/s or rad/s",
        "max |J v + dPhi/dt| over all constraint rows", {}, [this, &system](double t, double* out) {
-         constraint_velocity_target(system.model(), t, constraint_velocity_);
+         constraint_velocity_target(system.model(), system.data(), t, constraint_velocity_);
          constraint_velocity_.noalias() -= system.data().constraint_jacobian * system.velocity();
          out[0] = constraint_velocity_.cwiseAbs().maxCoeff();
        }});

@@ -11,7 +11,7 @@ namespace {
 /// them (MultibodySystem::constraint_loss) at the last Newton iterate.
 NumericalError unreachable_position(MultibodySystem& system, double t, const KinematicPoint& point,
                                     const KinematicSettings& settings) {
-  const StateDiagnosis loss = system.constraint_loss(1.0);
+  const StateDiagnosis loss = system.constraint_loss(t, 1.0);
   std::string what = fmt::format("the position at t = {:.6g} s cannot be reached: max |Phi| = {:.3g} after {} Newton "
                                  "iterations (kinematics.equation_tolerance {:g}, solution_tolerance {:g}; last "
                                  "step {:.3g})",

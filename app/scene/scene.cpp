@@ -28,7 +28,8 @@ void build_forces(BuildStage stage, SceneBuildContext& context) {
 /// driver declared last in the group, naming the rows it fights; nothing when no such
 /// group holds a driver.
 void reject_over_driven(const CaseDefinition& definition, const Model& model, Data& data) {
-  for (const InconsistentRows& group : inconsistent_rows(model, data, definition.solver.integrator.constraint_tolerance)) {
+  for (const InconsistentRows& group :
+       inconsistent_rows(model, data, definition.solver.t_start, definition.solver.integrator.constraint_tolerance)) {
     std::vector<int> rows = group.rows;
     rows.push_back(group.dependent);
     const Constraint* driver = nullptr;
@@ -79,7 +80,7 @@ Assembly assemble(const CaseDefinition& definition, const Model& model, Data& da
   }
   assembly.largest_position_change = (q - q_user).cwiseAbs().maxCoeff();
   assembly.largest_speed_change = model.nv > 0 ? (v - v_user).cwiseAbs().maxCoeff() : 0.0;
-  assembly.rank = analyse_constraint_rank(model, data);
+  assembly.rank = analyse_constraint_rank(model, data, definition.solver.t_start);
   return assembly;
 }
 
@@ -100,6 +101,8 @@ Scene build_scene(const CaseDefinition& definition) {
   for (const DistanceConstraintDefinition& constraint : definition.distance_constraints)
     builder.add_distance_constraint(constraint);
   for (const CouplerDefinition& coupler : definition.couplers) builder.add_coupler(coupler);
+  for (const ExpressionConstraintDefinition& constraint : definition.expression_constraints)
+    builder.add_expression_constraint(constraint);
   for (const DriverDefinition& driver : definition.drivers) builder.add_driver(driver);
 
   Scene scene;

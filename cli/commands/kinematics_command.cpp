@@ -167,7 +167,7 @@ int kinematics_command(const RunOptions& options) {
           ++singular_reports;
           progress.clear();
           fmt::print("  singular configuration at t = {:.6g} s (ratio {:.2g}): {}\n", t, point.singular_ratio,
-                     system.constraint_loss(1.0).what);
+                     system.constraint_loss(t, 1.0).what);
         }
         singular = now_singular;
         for (auto& [driver, peak] : driver_peaks)

@@ -10,7 +10,7 @@ const VectorX& constrained_forward_dynamics(const Model& model, Data& data, doub
   data.kkt_free_qdd = composite_rigid_body_forward_dynamics(model, data, tau, external_forces_world);
   if (!model.has_constraints()) return data.qdd;
 
-  constraint_jacobian(model, data, data.constraint_jacobian);
+  constraint_jacobian(model, data, t, data.constraint_jacobian);
   constraint_bias(model, data, t, data.constraint_bias);
   if (data.constraint_rows_set_aside) {
     // Rows set aside as redundant take no part: zero rows of J and gamma give zero rows

@@ -1,5 +1,6 @@
 #include "kernel/algorithms/constraint_equations.hpp"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -104,6 +105,7 @@ Force row_direction(const ConstraintRow& row, const FrameState& f) {
       return Force(angle_rate_axis(f), Vector3::Zero());
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
+    case ConstraintRowKind::expression:
       break;
   }
   return Force::Zero();
@@ -136,6 +138,7 @@ Force row_direction_rate(const ConstraintRow& row, const FrameState& f) {
       return Force(angle_rate_axis_rate(f), Vector3::Zero());
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
+    case ConstraintRowKind::expression:
       break;
   }
   return Force::Zero();
@@ -147,6 +150,24 @@ Motion acceleration_without_qdd(const Model& model, const Data& data, int link) 
   Motion a = Motion::Zero();
   for (int i = link; i > 0; i = model.joints[i].parent) a += data.bias_acceleration_world[i];
   return a;
+}
+
+/// An expression constraint's x_k = values[index[k]] (q) or its rates (v), gathered on
+/// the stack: the builder allows at most max_variables of them.
+using ExpressionPoint = std::array<double, ExpressionConstraint::max_variables>;
+ExpressionPoint gather(const std::vector<int>& index, const VectorX& values) {
+  ExpressionPoint x{};
+  for (std::size_t k = 0; k < index.size(); ++k) x[k] = values[index[k]];
+  return x;
+}
+
+/// df/dx at (data.q, t) into `gradient`; returns df/dt.
+double expression_gradient(const ExpressionConstraint& expression, const Data& data, double t,
+                           ExpressionPoint& gradient) {
+  const ExpressionPoint x = gather(expression.q_index, data.q);
+  double time_partial = 0.0;
+  expression.function->gradient(x.data(), t, gradient.data(), time_partial);
+  return time_partial;
 }
 
 }  // namespace
@@ -176,6 +197,10 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
           q[model.joints[driver->joint].q_index + driver->coordinate] - driver->motion(t).position;
       continue;
     }
+    if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
+      residual[constraint.first_row] = expression->function->value(gather(expression->q_index, q).data(), t);
+      continue;
+    }
     if (const auto* coupler = std::get_if<CouplerConstraint>(&constraint.kind)) {
       residual[constraint.first_row] = q[model.joints[coupler->joint_a].q_index] -
                                        coupler->ratio * q[model.joints[coupler->joint_b].q_index] - coupler->offset;
@@ -200,7 +225,8 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
           value = std::atan2(A.rotation().col(1).dot(B.rotation().col(0)), A.rotation().col(0).dot(B.rotation().col(0)));
           break;
         case ConstraintRowKind::coupler:
-        case ConstraintRowKind::driver: break;
+        case ConstraintRowKind::driver:
+        case ConstraintRowKind::expression: break;
       }
     }
     // A driver on frames: its one row is the measured coordinate minus f(t).
@@ -212,9 +238,17 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
   }
 }
 
-void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<MatrixX> jacobian) {
+void constraint_jacobian(const Model& model, const Data& data, double t, Eigen::Ref<MatrixX> jacobian) {
   jacobian.setZero();
   for (const Constraint& constraint : model.constraints) {
+    if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
+      // Phi = f(x): J_row = df/dx on the rates of x (for scalar coordinates qdot_k = v_k).
+      ExpressionPoint gradient;
+      expression_gradient(*expression, data, t, gradient);
+      for (std::size_t k = 0; k < expression->v_index.size(); ++k)
+        jacobian(constraint.first_row, expression->v_index[k]) += gradient[k];
+      continue;
+    }
     if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
       jacobian(constraint.first_row, model.joints[driver->joint].v_index + driver->coordinate) = 1.0;
       continue;
@@ -240,11 +274,16 @@ void constraint_jacobian(const Model& model, const Data& data, Eigen::Ref<Matrix
   }
 }
 
-void constraint_velocity_target(const Model& model, double t, Eigen::Ref<VectorX> target) {
+void constraint_velocity_target(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> target) {
   target.setZero();
-  for (const Constraint& constraint : model.constraints)
-    if (const DriverFunction* motion = constraint.driver_motion())
-      target[constraint.first_row] = (*motion)(t).velocity;
+  for (const Constraint& constraint : model.constraints) {
+    if (const DriverFunction* motion = constraint.driver_motion()) target[constraint.first_row] = (*motion)(t).velocity;
+    // dPhi/dt = f_x . xdot + f_t = 0, so J v = -f_t.
+    if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
+      ExpressionPoint gradient;
+      target[constraint.first_row] = -expression_gradient(*expression, data, t, gradient);
+    }
+  }
 }
 
 void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<VectorX> bias) {
@@ -255,6 +294,12 @@ void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<
     }
     if (std::holds_alternative<CouplerConstraint>(constraint.kind)) {
       bias[constraint.first_row] = 0.0;
+      continue;
+    }
+    if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
+      // d2Phi/dt2 = f_x . xdd + (v' f_xx v + 2 f_xt . v + f_tt): gamma is minus the second part.
+      const ExpressionPoint x = gather(expression->q_index, data.q), rates = gather(expression->v_index, data.v);
+      bias[constraint.first_row] = -expression->function->second_derivative_along(x.data(), rates.data(), t);
       continue;
     }
     const FrameState frames = frame_state(data, constraint);
@@ -283,9 +328,16 @@ Force constraint_wrench(const Model&, const Data& data, const Constraint& constr
   return wrench;
 }
 
-void add_constraint_loads(const Model& model, const Data& data, const VectorX& lambda,
+void add_constraint_loads(const Model& model, const Data& data, double t, const VectorX& lambda,
                           AlignedVector<Force>& external_forces_world, VectorX& tau) {
   for (const Constraint& constraint : model.constraints) {
+    if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
+      ExpressionPoint gradient;
+      expression_gradient(*expression, data, t, gradient);
+      for (std::size_t k = 0; k < expression->v_index.size(); ++k)
+        tau[expression->v_index[k]] += gradient[k] * lambda[constraint.first_row];
+      continue;
+    }
     if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
       tau[model.joints[driver->joint].v_index + driver->coordinate] += lambda[constraint.first_row];
       continue;

@@ -6,6 +6,7 @@ namespace heavesim {
 
 void update_positions(const Model& model, Data& data, const VectorX& q) {
   data.stages.begin_evaluation();
+  data.q = q;  // same size: a copy, no allocation
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Link& link = model.links[i];
@@ -31,6 +32,7 @@ void update_velocities(const Model& model, Data& data, const VectorX& q, const V
   // The velocity stage reads the placements and world subspaces of the position stage.
   if (!(data.stages.current & StageMarker::positions))
     throw std::logic_error("update_velocities: the position stage of this Data is not current");
+  data.v = v;
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Motion& v_parent = data.velocity_world[joint.parent];

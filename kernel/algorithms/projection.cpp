@@ -37,7 +37,7 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, double t
     constraint_residual(model, data, q, t, data.constraint_residual);
     result.position_residual = data.constraint_residual.cwiseAbs().maxCoeff();
     if (result.position_residual <= tolerance || result.iterations >= max_iterations) break;
-    constraint_jacobian(model, data, data.constraint_jacobian);
+    constraint_jacobian(model, data, t, data.constraint_jacobian);
     data.mass_matrix_cholesky.compute(mass_matrix(model, data));
     minimum_energy_correction(data, data.constraint_residual);
     data.projection_configuration = q;
@@ -47,8 +47,8 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, double t
   result.converged = result.position_residual <= tolerance;
 
   // Velocities: v -= M^-1 J^T (J M^-1 J^T)^+ (J v - nu) at the projected configuration.
-  constraint_jacobian(model, data, data.constraint_jacobian);
-  constraint_velocity_target(model, t, data.constraint_velocity_target);
+  constraint_jacobian(model, data, t, data.constraint_jacobian);
+  constraint_velocity_target(model, data, t, data.constraint_velocity_target);
   data.mass_matrix_cholesky.compute(mass_matrix(model, data));
   data.constraint_bias.noalias() = data.constraint_jacobian * v;  // workspace: J v - nu
   data.constraint_bias -= data.constraint_velocity_target;
@@ -60,11 +60,11 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, double t
   return result;
 }
 
-ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double relative_threshold) {
+ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double t, double relative_threshold) {
   ConstraintRank result;
   result.rows = model.num_constraint_rows;
   if (result.rows == 0) return result;
-  constraint_jacobian(model, data, data.constraint_jacobian);
+  constraint_jacobian(model, data, t, data.constraint_jacobian);
   Eigen::ColPivHouseholderQR<MatrixX> qr(data.constraint_jacobian.transpose());
   qr.setThreshold(relative_threshold);
   result.rank = static_cast<int>(qr.rank());

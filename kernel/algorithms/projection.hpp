@@ -37,7 +37,7 @@ struct ConstraintRank {
 /// Relative threshold on the pivots of J^T's column-pivoted QR below which a row counts
 /// as depending on the others.
 inline constexpr double constraint_rank_threshold = 1e-10;
-ConstraintRank analyse_constraint_rank(const Model& model, Data& data,
+ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double t,
                                        double relative_threshold = constraint_rank_threshold);
 
 /// The constraint that owns row r, or null.

@@ -17,8 +17,8 @@ namespace {
 /// (else the one in data is kept: within a time point's Newton iterations the metric only
 /// chooses among the solutions of J dq = -Phi, and M moves by O(|dq|) there).
 void factorize_constraints(const Model& model, Data& data, KinematicWorkspace& workspace,
-                           const KinematicSettings& settings, bool update_metric) {
-  constraint_jacobian(model, data, data.constraint_jacobian);
+                           const KinematicSettings& settings, double t, bool update_metric) {
+  constraint_jacobian(model, data, t, data.constraint_jacobian);
   const Eigen::LLT<MatrixX>* metric = nullptr;
   if (settings.weighting == MotionWeighting::mass) {
     if (update_metric) data.mass_matrix_cholesky.compute(mass_matrix(model, data));
@@ -59,7 +59,7 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
       break;
     }
     if (point.newton_iterations >= settings.max_iterations) break;
-    factorize_constraints(model, data, workspace, settings, point.newton_iterations == 0);
+    factorize_constraints(model, data, workspace, settings, t, point.newton_iterations == 0);
     workspace.rhs = -data.constraint_residual;
     workspace.solver.solve(workspace.rhs, workspace.step);  // J dq = -Phi, minimum-norm in W
     const double full_norm = data.constraint_residual.norm();
@@ -86,7 +86,7 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
   point.equation_residual = error;
   if (model.has_constraints()) {
     // The velocity and acceleration solves need the exact metric at q.
-    factorize_constraints(model, data, workspace, settings, true);
+    factorize_constraints(model, data, workspace, settings, t, true);
     point.rank = workspace.solver.rank();
     if (workspace.reference_rank < 0) workspace.reference_rank = point.rank;
     // sigma_rank / sigma_max of the weighted Jacobian A = J L^-T (the singular values of
@@ -107,7 +107,7 @@ void solve_velocities_and_accelerations(const Model& model, Data& data, Kinemati
     a.setZero();
     return;
   }
-  constraint_velocity_target(model, t, data.constraint_velocity_target);
+  constraint_velocity_target(model, data, t, data.constraint_velocity_target);
   workspace.solver.solve(data.constraint_velocity_target, v);
   update_velocities(model, data, q, v);
   constraint_bias(model, data, t, data.constraint_bias);
@@ -130,9 +130,9 @@ KinematicPoint analyse_time_point(const Model& model, Data& data, KinematicWorks
   return point;
 }
 
-std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, double tolerance) {
+std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, double t, double tolerance) {
   std::vector<InconsistentRows> found;
-  const ConstraintRank rank = analyse_constraint_rank(model, data);  // leaves J in data
+  const ConstraintRank rank = analyse_constraint_rank(model, data, t);  // leaves J in data
   if (rank.redundant_rows.empty()) return found;
   const std::vector<int> independent = rank.independent_rows();
   MatrixX basis(model.nv, static_cast<int>(independent.size()));

@@ -101,6 +101,6 @@ struct InconsistentRows {
 /// The dependent rows of J at the current position stage whose residual (in
 /// data.constraint_residual) is inconsistent beyond `tolerance` [m or rad]. For error
 /// reports: allocates.
-std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, double tolerance);
+std::vector<InconsistentRows> inconsistent_rows(const Model& model, Data& data, double t, double tolerance);
 
 }  // namespace heavesim

@@ -75,7 +75,7 @@ class EquilibriumProblem {
     }
     out.constraint.resize(m_);
     if (m_ > 0) {
-      constraint_jacobian(model_, data, data.constraint_jacobian);
+      constraint_jacobian(model_, data, t_, data.constraint_jacobian);
       constraint_residual(model_, data, system_.configuration(), t_, out.constraint);
       out.force.noalias() -= data.constraint_jacobian.transpose() * lambda_;
       scale = std::max(scale, lambda_.cwiseAbs().maxCoeff());

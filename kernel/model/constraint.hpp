@@ -11,6 +11,7 @@
 //   driver         q_a,k - f(t) = 0            (prescribed motion of one joint coordinate)
 //   length         |p_B - p_A|                 (a distance driver's measured coordinate, m)
 //   angle          atan2(y_A . x_B, x_A . x_B) (an angle driver's: x_B's angle about z_A, rad)
+//   expression     f(x, t) = 0                 (a user function of scalar joint coordinates x)
 //
 // Drivers on frames (absolute: an `along` row on a world-fixed frame A; distance: a
 // `length` row; angle: an `angle` row) subtract f(t) from their row, so that every
@@ -21,16 +22,18 @@
 // force direction on B (and -G_B on A): this gives J, -dJ/dt v and the constraint's
 // reaction wrench without finite differences (constraint_equations.hpp).
 #include <functional>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
 
 #include "kernel/joints/joint.hpp"
+#include "kernel/model/constraint_function.hpp"
 #include "kernel/spatial/transform.hpp"
 
 namespace heavesim {
 
-enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver, length, angle };
+enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver, length, angle, expression };
 
 struct ConstraintRow {
   ConstraintRowKind kind = ConstraintRowKind::along;
@@ -83,8 +86,20 @@ struct DistanceDriverConstraint {
 struct AngleDriverConstraint {
   DriverFunction motion;  // rad
 };
+/// f(x, t) = 0 over scalar joint coordinates x_k = q[q_index[k]] (revolute, prismatic,
+/// a cylindrical or universal joint's coordinate: never a quaternion's), whose rates are
+/// v[v_index[k]]. Like a coupler it acts on coordinates: its Jacobian row is df/dx on
+/// the v indices and its multiplier a generalized force J^T lambda on those
+/// coordinates (docs/physics/expression-constraints.md). It may read t, but it is not a
+/// driver: it prescribes no measured coordinate, so it has no actuator force to report.
+struct ExpressionConstraint {
+  static constexpr int max_variables = 16;  // x is gathered on the stack (no allocation)
+  std::vector<int> q_index, v_index;
+  std::shared_ptr<const ConstraintFunction> function;
+};
 using ConstraintKind = std::variant<LoopJointConstraint, DistanceConstraint, CouplerConstraint, DriverConstraint,
-                                    AbsoluteDriverConstraint, DistanceDriverConstraint, AngleDriverConstraint>;
+                                    AbsoluteDriverConstraint, DistanceDriverConstraint, AngleDriverConstraint,
+                                    ExpressionConstraint>;
 
 struct Constraint {
   std::string name;
@@ -117,10 +132,11 @@ struct Constraint {
   }
   bool is_driver() const { return driver_motion() != nullptr; }
   /// "loop joint", "distance constraint", "coupler", "driver", "absolute driver",
-  /// "distance driver" or "angle driver".
+  /// "distance driver", "angle driver" or "expression constraint".
   const char* kind_name() const {
     static constexpr const char* names[] = {"loop joint",      "distance constraint", "coupler",     "driver",
-                                            "absolute driver", "distance driver",     "angle driver"};
+                                            "absolute driver", "distance driver",     "angle driver",
+                                            "expression constraint"};
     return names[kind.index()];
   }
 };

@@ -11,6 +11,8 @@ Data::Data(const Model& model)
   // Eigen's LLT(size) constructor leaves unset (UBSan flags a copy of such a Data).
   mass_matrix_cholesky.compute(MatrixX::Identity(model.nv, model.nv));
   const int n = model.num_links();
+  q = model.neutral_configuration();
+  v = VectorX::Zero(model.nv);
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
   rigid_inertia_world.assign(n, Inertia());

@@ -53,6 +53,10 @@ struct Data {
   StageMarker stages;  // what below is current, and for which evaluation
 
   // --- position stage (update_positions) ---
+  // The joint coordinates of this stage (nq), kept as MuJoCo's mjData keeps qpos: the
+  // expression constraints' Jacobian row df/dx reads them, so that constraint_jacobian
+  // and its many callers need not pass q beside the Data computed from it.
+  VectorX q;
   AlignedVector<Transform> X_world_link;    // link frame in the world
   Matrix6X motion_subspace_world;           // 6 x nv: column k = spatial motion per unit v_k
   AlignedVector<Inertia> rigid_inertia_world;  // rigid-body inertia of each link
@@ -60,6 +64,7 @@ struct Data {
   AlignedVector<Force> gravity_force_world; // weight m g at the link CoM
 
   // --- velocity stage (update_velocities) ---
+  VectorX v;  // nv: the joint velocities of this stage (mjData's qvel), for constraint_bias
   AlignedVector<Motion> velocity_world;           // spatial velocity v_i of each link
   AlignedVector<Motion> bias_acceleration_world;  // c_i = dS_i/dt v_i (velocity-product term)
   AlignedVector<Force> bias_force_world;          // v_i x* (I_i v_i)

@@ -278,6 +278,48 @@ void ModelBuilder::add_constraints(Model& model) const {
     constraint.rows = {{ConstraintRowKind::driver, 0, 0, "prescribed coordinate"}};
     add(std::move(constraint));
   }
+  for (const ExpressionConstraintDefinition& def : expressions_) {
+    Constraint constraint = start(def.name, ExpressionConstraint{});
+    auto& expression = std::get<ExpressionConstraint>(constraint.kind);
+    const int count = static_cast<int>(def.variables.size());
+    if (count < 1 || count > ExpressionConstraint::max_variables)
+      throw constraint_error(def.name, "variables", std::to_string(count) + " variables",
+                             "1 to " + std::to_string(ExpressionConstraint::max_variables) + " joint coordinates");
+    const int function_size = def.function ? def.function->size() : 0;
+    if (function_size != count)
+      throw constraint_error(def.name, "expression", "a function of " + std::to_string(function_size) + " coordinates",
+                             "a function of its " + std::to_string(count) + " variables");
+    for (const ExpressionVariable& variable : def.variables) {
+      const std::string field = "variables." + variable.name;
+      const int index = model.joint_index(variable.joint);
+      if (index < 0)
+        throw constraint_error(def.name, field, "'" + variable.joint + "', which is not a joint of the tree",
+                               "the name of a revolute, prismatic, cylindrical or universal joint");
+      const Joint& joint = model.joints[index];
+      // Quaternion coordinates (spherical, free) are not the integrals of their rates: a
+      // function of them would need the q -> v map in its Jacobian. Refused.
+      if (joint.nv == 0 || !joint_has_scalar_coordinates(joint.type))
+        throw constraint_error(def.name, field, "joint '" + variable.joint + "', a " + joint_type_name(joint.type) +
+                                                    " joint",
+                               "a revolute, prismatic, cylindrical or universal joint (scalar coordinates)");
+      if (!variable.coordinate && joint.nv != 1)
+        throw constraint_error(def.name, field,
+                               "joint '" + variable.joint + "', a " + joint_type_name(joint.type) + " joint with " +
+                                   std::to_string(joint.nv) + " coordinates, without a coordinate",
+                               "{joint: " + variable.joint + ", coordinate: 0 to " + std::to_string(joint.nv - 1) +
+                                   "}");
+      const int coordinate = variable.coordinate.value_or(0);
+      if (coordinate < 0 || coordinate >= joint.nv)
+        throw constraint_error(def.name, field + ".coordinate", std::to_string(coordinate),
+                               "0 to " + std::to_string(joint.nv - 1) + " (the coordinates of joint '" +
+                                   variable.joint + "')");
+      expression.q_index.push_back(joint.q_index + coordinate);
+      expression.v_index.push_back(joint.v_index + coordinate);
+    }
+    expression.function = def.function;
+    constraint.rows = {{ConstraintRowKind::expression, 0, 0, "expression"}};
+    add(std::move(constraint));
+  }
 }
 
 Model ModelBuilder::build() const {

@@ -83,6 +83,23 @@ struct CouplerDefinition {
   double offset = 0.0;                   // rad or m
 };
 
+/// A coordinate an expression constraint reads: coordinate `coordinate` of `joint` (a
+/// revolute, prismatic, cylindrical or universal joint: scalar coordinates, m or rad).
+struct ExpressionVariable {
+  std::string name;               // its symbol in the expression; ModelError fields are "variables.<name>"
+  std::string joint;
+  std::optional<int> coordinate;  // none: the joint's only coordinate
+};
+
+/// f(x, t) = 0 over the variables x (in the function's order); the function gives f and
+/// its exact derivatives (constraint_function.hpp). A cam profile s = r sin(theta) reads
+/// "s - r*sin(theta)" over the slider's and the crank's coordinates.
+struct ExpressionConstraintDefinition {
+  std::string name;
+  std::vector<ExpressionVariable> variables;
+  std::shared_ptr<const ConstraintFunction> function;
+};
+
 /// What a driver prescribes (docs/physics/drivers.md):
 ///   joint     q_joint,coordinate = f(t): one coordinate of a joint with plain
 ///             coordinates (revolute, prismatic, cylindrical, universal) [m or rad]
@@ -121,6 +138,9 @@ class ModelBuilder {
   }
   void add_coupler(CouplerDefinition coupler) { couplers_.push_back(std::move(coupler)); }
   void add_driver(DriverDefinition driver) { drivers_.push_back(std::move(driver)); }
+  void add_expression_constraint(ExpressionConstraintDefinition constraint) {
+    expressions_.push_back(std::move(constraint));
+  }
 
   /// Checks the topology (each body the child of exactly one joint, no cycle, all
   /// connected to ground), the physical data and the constraints; throws ModelError.
@@ -135,6 +155,7 @@ class ModelBuilder {
   std::vector<DistanceConstraintDefinition> distances_;
   std::vector<CouplerDefinition> couplers_;
   std::vector<DriverDefinition> drivers_;
+  std::vector<ExpressionConstraintDefinition> expressions_;
 };
 
 }  // namespace heavesim

@@ -30,7 +30,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
   const VectorX& q = system.configuration();
   const VectorX& v = system.velocity();
   if (m > 0) {
-    constraint_jacobian(model, data, data.constraint_jacobian);
+    constraint_jacobian(model, data, t, data.constraint_jacobian);
     rows_jacobian_ = data.constraint_jacobian(rows, Eigen::all);
   }
   out.mass.resize(nv, nv);
@@ -66,7 +66,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
     direction_[k] = 0.0;
     update_positions(model, scratch_data_, q_perturbed_);
     if (m > 0) {
-      constraint_jacobian(model, scratch_data_, scratch_data_.constraint_jacobian);
+      constraint_jacobian(model, scratch_data_, t, scratch_data_.constraint_jacobian);
       jacobian_change_ = scratch_data_.constraint_jacobian(rows, Eigen::all);
       jacobian_change_ -= rows_jacobian_;
       jacobian_change_ /= h;  // dJ/d(tangent k)

@@ -50,7 +50,7 @@ void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, 
   rows_.clear();
   if (model.has_constraints()) {
     // The ODE evaluation left the position stage at q and lambda of all rows.
-    const ConstraintRank rank = analyse_constraint_rank(model, data);
+    const ConstraintRank rank = analyse_constraint_rank(model, data, t);
     rows_ = rank.independent_rows();
     system_.remember_constraint_rank(rank.rank);
   }
@@ -99,9 +99,9 @@ void GglDaeForm::residual(double t, const VectorX& y, const VectorX& yp, VectorX
   r.segment(nq, nv) -= forces.joint_force;
   w_ = v;
   if (m > 0) {
-    constraint_jacobian(model, data, data.constraint_jacobian);
+    constraint_jacobian(model, data, t, data.constraint_jacobian);
     constraint_residual(model, data, q, t, data.constraint_residual);
-    constraint_velocity_target(model, t, data.constraint_velocity_target);
+    constraint_velocity_target(model, data, t, data.constraint_velocity_target);
     rows_jacobian_ = data.constraint_jacobian(rows_, Eigen::all);
     constraint_ = data.constraint_residual(rows_);
     r.segment(nq, nv).noalias() -= rows_jacobian_.transpose() * y.segment(size, m);

@@ -24,7 +24,7 @@ void Index3Form::initial_accelerations(double t, const VectorX& y, VectorX& a, V
   lambda = system_.data().constraint_multipliers;
   independent_rows_.clear();
   if (!model.has_constraints()) return;
-  const ConstraintRank rank = analyse_constraint_rank(model, system_.mutable_data());
+  const ConstraintRank rank = analyse_constraint_rank(model, system_.mutable_data(), t);
   independent_rows_ = rank.independent_rows();
   system_.remember_constraint_rank(rank.rank);  // the reference rank for diagnoses
 }
@@ -40,7 +40,7 @@ void Index3Form::dynamics_residual(double t, const VectorX& y, const VectorX& a,
   r_v = inverse_dynamics(model, data, a, forces.external_force_world);
   r_v -= forces.joint_force;
   if (model.has_constraints()) {
-    constraint_jacobian(model, data, data.constraint_jacobian);
+    constraint_jacobian(model, data, t, data.constraint_jacobian);
     constraint_residual(model, data, system_.configuration(), t, phi);
     // Bayo & Ledesma: lambda* += -p Phi(q) on arriving at q, then the force is
     // J^T (lambda* - p Phi). (Updating after the residual instead makes the iteration
@@ -73,9 +73,9 @@ void Index3Form::constraint_terms(double t, const VectorX& y, ConstraintTerms& o
   out.velocity_target.resize(m);
   out.bias.resize(m);
   if (m == 0) return;
-  constraint_jacobian(model, data, out.jacobian);
+  constraint_jacobian(model, data, t, out.jacobian);
   constraint_residual(model, data, system_.configuration(), t, out.residual);
-  constraint_velocity_target(model, t, out.velocity_target);
+  constraint_velocity_target(model, data, t, out.velocity_target);
   constraint_bias(model, data, t, out.bias);
 }
 

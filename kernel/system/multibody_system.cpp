@@ -106,8 +106,8 @@ void MultibodySystem::check_constraint_solution(double t) {
   if (error <= settings_.kkt_consistency_tolerance) return;
   // The error path may allocate. The rows becoming dependent say why: a driver among
   // them prescribes what the loop cannot follow, and then no integrator can go on.
-  const ConstraintRank rank = analyse_constraint_rank(*model_, data_);
-  const StateDiagnosis loss = constraint_loss(1.0);
+  const ConstraintRank rank = analyse_constraint_rank(*model_, data_, t);
+  const StateDiagnosis loss = constraint_loss(t, 1.0);
   std::string what = "the constraint equations have no solution (singular configuration): the acceleration of " +
                      describe_constraint_row(*model_, worst) + " cannot be met (relative mismatch " +
                      std::to_string(error) + ", rank " + std::to_string(rank.rank) + " of " +
@@ -120,11 +120,11 @@ void MultibodySystem::check_constraint_solution(double t) {
                      "dead centre) stops here with any integrator");
 }
 
-void MultibodySystem::spread_multipliers_over_every_row() {
+void MultibodySystem::spread_multipliers_over_every_row(double t) {
   // The constraint force f = J_used^T lambda is unique; the multipliers reported are the
   // minimum-norm ones over every row for it, whichever rows were set aside.
   constraint_force_.noalias() = data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
-  constraint_jacobian(*model_, data_, data_.constraint_jacobian);
+  constraint_jacobian(*model_, data_, t, data_.constraint_jacobian);
   minimum_norm_multipliers(constraint_force_);
 }
 
@@ -141,11 +141,11 @@ void MultibodySystem::minimum_norm_multipliers(const VectorX& generalized_force)
   data_.kkt_solver.solve(data_.kkt_rhs, data_.constraint_multipliers);
 }
 
-void MultibodySystem::compute_joint_reactions() {
+void MultibodySystem::compute_joint_reactions(double t) {
   total_loads_ = forces_.external_force_world;
   if (model_->has_constraints()) {
     tau_total_ = forces_.joint_force;
-    add_constraint_loads(*model_, data_, data_.constraint_multipliers, total_loads_, tau_total_);
+    add_constraint_loads(*model_, data_, t, data_.constraint_multipliers, total_loads_, tau_total_);
   }
   compute_joint_wrenches(*model_, data_, total_loads_);
 }
@@ -171,8 +171,8 @@ void MultibodySystem::state_derivative(double t, const VectorX& y, VectorX& ydot
 void MultibodySystem::evaluate(double t, const VectorX& y, bool compute_reactions) {
   compute_accelerations(t, y);
   if (!compute_reactions) return;
-  if (data_.constraint_rows_set_aside) spread_multipliers_over_every_row();
-  compute_joint_reactions();
+  if (data_.constraint_rows_set_aside) spread_multipliers_over_every_row(t);
+  compute_joint_reactions(t);
 }
 
 void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const VectorX& qdd, bool compute_reactions) {
@@ -187,13 +187,13 @@ void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const Vect
   if (model.has_constraints()) {
     // The multipliers that best supply f = M qdd + C - tau (exact for a dynamically
     // consistent motion, f in the range of J^T); what remains is the dynamic residual.
-    constraint_jacobian(model, data_, data_.constraint_jacobian);
+    constraint_jacobian(model, data_, t, data_.constraint_jacobian);
     data_.mass_matrix_cholesky.compute(mass_matrix(model, data_));
     minimum_norm_multipliers(dynamic_residual_);
     dynamic_residual_.noalias() -= data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
   }
   if (!data_.constraint_multipliers.allFinite()) report_non_finite(t, dynamic_residual_, "constraint force");
-  if (compute_reactions) compute_joint_reactions();
+  if (compute_reactions) compute_joint_reactions(t);
 }
 
 std::string MultibodySystem::describe_state_component(int index) const {
@@ -218,7 +218,7 @@ std::string MultibodySystem::describe_state_component(int index) const {
   return "state component " + std::to_string(index);
 }
 
-StateDiagnosis MultibodySystem::diagnose_state(double /*t*/, const VectorX& y) {
+StateDiagnosis MultibodySystem::diagnose_state(double t, const VectorX& y) {
   const Model& model = *model_;
   for (int k = 0; k < y.size(); ++k)
     if (!std::isfinite(y[k])) return {"the " + describe_state_component(k) + " is not finite", ""};
@@ -226,13 +226,13 @@ StateDiagnosis MultibodySystem::diagnose_state(double /*t*/, const VectorX& y) {
   compute_kinematics(y);
   // Away from a singular configuration the ratio is of order one (Bricard's mechanism:
   // ~0.3; the A02 four-bars: 1e-2 at 0.01 rad from lying flat).
-  return constraint_loss(1e-4);
+  return constraint_loss(t, 1e-4);
 }
 
-StateDiagnosis MultibodySystem::constraint_loss(double max_ratio) {
+StateDiagnosis MultibodySystem::constraint_loss(double t, double max_ratio) {
   const Model& model = *model_;
   if (!model.has_constraints()) return {};
-  constraint_jacobian(model, data_, data_.constraint_jacobian);
+  constraint_jacobian(model, data_, t, data_.constraint_jacobian);
   const Eigen::JacobiSVD<MatrixX> svd(data_.constraint_jacobian, Eigen::ComputeThinU);
   const VectorX& sigma = svd.singularValues();
   int rank = constraint_rank_;

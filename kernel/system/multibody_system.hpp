@@ -98,7 +98,7 @@ class MultibodySystem {
   /// is below `max_ratio`, or below 100 max_ratio with a driver among the rows (a driven
   /// loop fails before it reaches the singular point: its speeds grow as 1/sqrt of the
   /// distance); max_ratio >= 1 always reports.
-  StateDiagnosis constraint_loss(double max_ratio);
+  StateDiagnosis constraint_loss(double t, double max_ratio);
   /// The rank of the constraint Jacobian on the manifold, as a form found it when it
   /// started (the reference for diagnose_state); -1 until then.
   void remember_constraint_rank(int rank) { constraint_rank_ = rank; }
@@ -123,13 +123,13 @@ class MultibodySystem {
   void check_constraint_solution(double t);
   /// With rows set aside (Data::constraint_row_used), the minimum-norm multipliers over
   /// every row for the same constraint force, for reporting.
-  void spread_multipliers_over_every_row();
+  void spread_multipliers_over_every_row(double t);
   /// The minimum-norm multipliers (in the metric M^-1) whose force J^T lambda best equals
   /// `generalized_force` (nv), from data_.constraint_jacobian (every row) and the current
   /// factor of M; into data_.constraint_multipliers.
   void minimum_norm_multipliers(const VectorX& generalized_force);
   /// Joint wrenches from the applied forces and the constraint loads of the multipliers.
-  void compute_joint_reactions();
+  void compute_joint_reactions(double t);
 
   std::shared_ptr<const Model> model_;
   SystemSettings settings_;

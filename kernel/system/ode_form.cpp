@@ -37,7 +37,7 @@ void OdeForm::project(double t, VectorX& y) {
       // Where the projection stopped: rows becoming dependent there (a driver pulling
       // the loop beyond its reach) are the cause, not the step. The projection has
       // already failed, so a weaker loss (1e-2; with a driver, any) is the explanation.
-      const StateDiagnosis loss = system_.constraint_loss(1e-2);
+      const StateDiagnosis loss = system_.constraint_loss(t, 1e-2);
       throw loss.explain(t, what,
                          !loss.empty()
                              ? "the loops are at a singular configuration: solver.integrator: hht carries a "

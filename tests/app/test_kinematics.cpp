@@ -121,7 +121,7 @@ TEST(KinematicAnalysis, MinimumNormSolvesMatchTheWeightedPseudoInverse) {
 
     update_positions(model, data, q);
     MatrixX J(model.num_constraint_rows, model.nv);
-    constraint_jacobian(model, data, J);
+    constraint_jacobian(model, data, t, J);
     const MatrixX W = weighting == MotionWeighting::mass ? MatrixX(mass_matrix(model, data))
                                                          : MatrixX::Identity(model.nv, model.nv);
     const MatrixX W_inverse_Jt = W.llt().solve(J.transpose());
@@ -129,7 +129,7 @@ TEST(KinematicAnalysis, MinimumNormSolvesMatchTheWeightedPseudoInverse) {
     Eigen::CompleteOrthogonalDecomposition<MatrixX> pseudo(schur);
     pseudo.setThreshold(1e-12);
     VectorX nu(model.num_constraint_rows), gamma(model.num_constraint_rows);
-    constraint_velocity_target(model, t, nu);
+    constraint_velocity_target(model, data, t, nu);
     const VectorX v_reference = W_inverse_Jt * pseudo.solve(nu);
     update_velocities(model, data, q, v_reference);
     constraint_bias(model, data, t, gamma);

@@ -47,7 +47,7 @@ TEST_F(Constraints, JacobianIsTheDerivativeOfTheResidual) {
     const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     MatrixX J(model->num_constraint_rows, model->nv);
-    constraint_jacobian(*model, *data, J);
+    constraint_jacobian(*model, *data, time, J);
     const double h = 1e-6;
     VectorX q_plus(model->nq), q_minus(model->nq);
     MatrixX finite(model->num_constraint_rows, model->nv);
@@ -85,9 +85,9 @@ TEST_F(Constraints, VelocityTargetIsMinusTheTimeDerivative) {
     const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     MatrixX J(model->num_constraint_rows, model->nv);
-    constraint_jacobian(*model, *data, J);
+    constraint_jacobian(*model, *data, time, J);
     VectorX nu(model->num_constraint_rows);
-    constraint_velocity_target(*model, time, nu);
+    constraint_velocity_target(*model, *data, time, nu);
     EXPECT_GT(nu.cwiseAbs().maxCoeff(), 0.1);  // the driver moves
     const double h = 1e-6;
     VectorX q_plus(model->nq), q_minus(model->nq);
@@ -103,12 +103,12 @@ TEST_F(Constraints, LoadsAreJacobianTransposeTimesMultipliers) {
   const samples::RandomState state = samples::random_state(*model, random);
   update_positions(*model, *data, state.q);
   MatrixX J(model->num_constraint_rows, model->nv);
-  constraint_jacobian(*model, *data, J);
+  constraint_jacobian(*model, *data, time, J);
   VectorX lambda(model->num_constraint_rows);
   for (int r = 0; r < lambda.size(); ++r) lambda[r] = std::uniform_real_distribution<double>(-5, 5)(random);
   AlignedVector<Force> loads(model->num_links(), Force::Zero());
   VectorX tau = VectorX::Zero(model->nv);
-  add_constraint_loads(*model, *data, lambda, loads, tau);
+  add_constraint_loads(*model, *data, time, lambda, loads, tau);
   // Generalized force of the link loads: -(ID with them - ID without), at v = qdd = 0.
   const VectorX zero = VectorX::Zero(model->nv);
   const VectorX with_loads = rnea(*model, *data, state.q, zero, zero, loads);
@@ -124,7 +124,7 @@ TEST(ConstraintRank, RedundantRowsOfAnOverconstrainedLoopAreNamed) {
   const Model model = samples::overconstrained_rails();
   Data data(model);
   update_positions(model, data, model.neutral_configuration());
-  const ConstraintRank rank = analyse_constraint_rank(model, data);
+  const ConstraintRank rank = analyse_constraint_rank(model, data, 0.0);
   EXPECT_EQ(rank.rows, 6);
   EXPECT_EQ(rank.rank, 1);
   EXPECT_EQ(rank.redundant_rows.size(), 5u);
@@ -165,7 +165,7 @@ TEST(ConstraintRank, RedundantRowsOfAPlanarFourBarAreNamedInTheUsersJointFrame) 
   const Model model = builder.build();
   Data data(model);
   update_positions(model, data, model.neutral_configuration());
-  const ConstraintRank rank = analyse_constraint_rank(model, data);
+  const ConstraintRank rank = analyse_constraint_rank(model, data, 0.0);
   EXPECT_EQ(rank.rows, 5);
   EXPECT_EQ(rank.rank, 2);
   std::vector<std::string> redundant;

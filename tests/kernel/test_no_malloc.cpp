@@ -8,6 +8,7 @@
 #include <array>
 #include <random>
 
+#include "app/case/coordinate_expression.hpp"
 #include "control/active/active_compensator.hpp"
 #include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
@@ -84,10 +85,45 @@ TEST(NoMalloc, ConstraintEquationsOfEveryKindDoNotAllocate) {
     update_positions(model, data, state.q);
     update_velocities(model, data, state.q, state.v);
     constraint_residual(model, data, state.q, 0.7, phi);
-    constraint_jacobian(model, data, J);
-    constraint_velocity_target(model, 0.7, nu);
+    constraint_jacobian(model, data, 0.7, J);
+    constraint_velocity_target(model, data, 0.7, nu);
     constraint_bias(model, data, 0.7, gamma);
-    add_constraint_loads(model, data, lambda, loads, tau);
+    add_constraint_loads(model, data, 0.7, lambda, loads, tau);
+  });
+}
+
+TEST(NoMalloc, ExpressionConstraintDoesNotAllocate) {
+  // A cam s = r sin(theta) + 0.01 t theta written as an expression: Phi, J, nu, gamma and
+  // its load gather x on the stack and evaluate the expression's bytecode on a stack
+  // sized when it was parsed.
+  ModelBuilder builder;
+  builder.add_body({"cam", Inertia(1.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
+  builder.add_body({"follower", Inertia(2.0, Vector3::Zero(), Matrix3::Identity()), std::nullopt});
+  JointDefinition joint;
+  joint.name = "shaft", joint.kind = JointKind::revolute, joint.parent = "ground", joint.child = "cam";
+  builder.add_joint(joint);
+  joint.name = "slide", joint.kind = JointKind::prismatic, joint.child = "follower";
+  builder.add_joint(joint);
+  builder.add_expression_constraint(
+      {"cam_profile", {{"s", "slide", {}}, {"theta", "shaft", {}}},
+       std::make_shared<const CoordinateExpression>("s - 0.2*sin(theta) + 0.01*t*theta",
+                                                    std::vector<std::string>{"s", "theta"},
+                                                    std::map<std::string, double>{})});
+  const Model model = builder.build();
+  Data data(model);
+  const VectorX q = Eigen::Vector2d(0.1, 0.7), v = Eigen::Vector2d(-0.3, 2.0);
+  VectorX phi(1), nu(1), gamma(1), lambda = VectorX::Ones(1), tau = VectorX::Zero(model.nv);
+  MatrixX J(1, model.nv);
+  AlignedVector<Force> loads(model.num_links(), Force::Zero());
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW({
+    update_positions(model, data, q);
+    update_velocities(model, data, q, v);
+    constraint_residual(model, data, q, 0.7, phi);
+    constraint_jacobian(model, data, 0.7, J);
+    constraint_velocity_target(model, data, 0.7, nu);
+    constraint_bias(model, data, 0.7, gamma);
+    add_constraint_loads(model, data, 0.7, lambda, loads, tau);
   });
 }
 

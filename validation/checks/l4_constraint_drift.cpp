@@ -28,8 +28,8 @@ std::vector<ValidationRow> check_l4_constraint_drift() {
         const VectorX& q = system.configuration();
         update_positions(model, data, q);
         constraint_residual(model, data, q, t, data.constraint_residual);
-        constraint_jacobian(model, data, data.constraint_jacobian);
-        constraint_velocity_target(model, t, data.constraint_velocity_target);
+        constraint_jacobian(model, data, t, data.constraint_jacobian);
+        constraint_velocity_target(model, data, t, data.constraint_velocity_target);
         data.constraint_bias.noalias() = data.constraint_jacobian * system.velocity();  // workspace: J v
         data.constraint_bias -= data.constraint_velocity_target;
         position_drift = std::max(position_drift, data.constraint_residual.cwiseAbs().maxCoeff());

@@ -28,6 +28,7 @@
 
 #include <unsupported/Eigen/AutoDiff>
 
+#include "app/case/coordinate_expression.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/algorithms/projection.hpp"
@@ -329,7 +330,7 @@ TEST_F(ConstraintDerivativesAD, JacobianOfEveryKindIsTheDerivative) {
     const samples::RandomState state = samples::random_state(*model, random);
     update_positions(*model, *data, state.q);
     MatrixX J(model->num_constraint_rows, model->nv);
-    constraint_jacobian(*model, *data, J);
+    constraint_jacobian(*model, *data, time, J);
     const VX<Gradient> oracle =
         constraint_function(*model, state.q, seeded_increments(model->nv), time, gradient_constant(0.0, model->nv));
     for (int row = 0; row < J.rows(); ++row)
@@ -341,8 +342,9 @@ TEST_F(ConstraintDerivativesAD, JacobianOfEveryKindIsTheDerivative) {
 
 TEST_F(ConstraintDerivativesAD, VelocityTargetIsMinusTheTimeDerivative) {
   const samples::RandomState state = samples::random_state(*model, random);
+  update_positions(*model, *data, state.q);
   VectorX nu(model->num_constraint_rows);
-  constraint_velocity_target(*model, time, nu);
+  constraint_velocity_target(*model, *data, time, nu);
   const VX<SecondOrder> at_rest = VX<SecondOrder>::Constant(model->nv, constant<SecondOrder>(0.0));
   const VX<SecondOrder> oracle = constraint_function(*model, state.q, at_rest, time, time_variable());
   VectorX expected(nu.size());
@@ -432,6 +434,91 @@ TEST_F(ConstraintDerivativesAD, MotionSubspacesAndBiasAccelerationsOfEveryJointT
       EXPECT_LT((analytic_acceleration - acceleration).cwiseAbs().maxCoeff(), 1e-12 * velocity_scale * velocity_scale)
           << analytic_acceleration.transpose() << "\n" << acceleration.transpose();
     }
+  }
+}
+
+}  // namespace
+}  // namespace heavesim
+
+namespace heavesim {
+namespace {
+
+/// The expression constraint's function, written here in C++ for AutoDiffScalar: the same
+/// formula as the text the kernel evaluates through muParser's bytecode and Taylor
+/// arithmetic (app/case/coordinate_expression.hpp). Nonlinear in every coordinate, in t,
+/// and mixed (x-t terms make J depend on t and give gamma its 2 f_xt . v and f_tt parts).
+constexpr const char* cam_text = "a*sin(b) - c^2*cos(t) + 0.3*exp(0.2*a*t) + b*c*t - 0.5";
+template <class S>
+S cam_function(const S& a, const S& b, const S& c, const S& t) {
+  using std::cos;
+  using std::exp;
+  using std::sin;
+  return a * sin(b) - c * c * cos(t) + constant<S>(0.3) * exp(constant<S>(0.2) * a * t) + b * c * t -
+         constant<S>(0.5);
+}
+
+TEST_F(ConstraintDerivativesAD, ExpressionConstraintJacobianVelocityTargetAndBias) {
+  // A chain ground -revolute- arm -prismatic- slider -cylindrical- sleeve, and f over the
+  // revolute's angle a, the prismatic's stroke b and the cylindrical's slide c
+  // (coordinate 1), whose columns are v_index 0, 1 and 3.
+  ModelBuilder builder;
+  for (const char* body : {"arm", "slider", "sleeve"})
+    builder.add_body({body, Inertia(1.0, Vector3(0.1, 0, 0), Matrix3::Identity() * 0.1), std::nullopt});
+  JointDefinition joint;
+  joint.name = "pivot", joint.kind = JointKind::revolute, joint.parent = "ground", joint.child = "arm";
+  builder.add_joint(joint);
+  joint.name = "rail", joint.kind = JointKind::prismatic, joint.parent = "arm", joint.child = "slider";
+  builder.add_joint(joint);
+  joint.name = "shaft", joint.kind = JointKind::cylindrical, joint.parent = "slider", joint.child = "sleeve";
+  builder.add_joint(joint);
+  const auto function = std::make_shared<const CoordinateExpression>(cam_text, std::vector<std::string>{"a", "b", "c"},
+                                                                     std::map<std::string, double>{});
+  builder.add_expression_constraint({"cam", {{"a", "pivot", {}}, {"b", "rail", {}}, {"c", "shaft", 1}}, function});
+  const Model cam_model = builder.build();
+  Data cam_data(cam_model);
+  ASSERT_EQ(cam_model.num_constraint_rows, 1);
+  EXPECT_STREQ(cam_model.constraints[0].kind_name(), "expression constraint");
+  EXPECT_FALSE(cam_model.constraints[0].is_driver());
+  const int columns[3] = {0, 1, 3};
+
+  std::uniform_real_distribution<double> uniform(-1.5, 1.5);
+  for (int trial = 0; trial < trials; ++trial) {
+    VectorX q(cam_model.nq), v(cam_model.nv);
+    for (int k = 0; k < q.size(); ++k) q[k] = uniform(random);
+    for (int k = 0; k < v.size(); ++k) v[k] = uniform(random);
+    const double t = time + uniform(random);
+    update_positions(cam_model, cam_data, q);
+    update_velocities(cam_model, cam_data, q, v);
+    VectorX phi(1), nu(1), gamma(1);
+    MatrixX J(1, cam_model.nv);
+    constraint_residual(cam_model, cam_data, q, t, phi);
+    constraint_jacobian(cam_model, cam_data, t, J);
+    constraint_velocity_target(cam_model, cam_data, t, nu);
+    constraint_bias(cam_model, cam_data, t, gamma);
+
+    // J and nu: one AutoDiffScalar over (a, b, c, t).
+    using Four = Eigen::AutoDiffScalar<Eigen::Vector4d>;
+    const Four f = cam_function(Four(q[0], 4, 0), Four(q[1], 4, 1), Four(q[3], 4, 2), Four(t, 4, 3));
+    VectorX J_expected = VectorX::Zero(cam_model.nv);
+    for (int k = 0; k < 3; ++k) J_expected[columns[k]] = f.derivatives()[k];
+    EXPECT_NEAR(phi[0], f.value(), 1e-14 * std::max(1.0, std::abs(f.value())));
+    EXPECT_LT(relative_error(J.row(0).transpose(), J_expected), 1e-12) << J << "\n" << J_expected.transpose();
+    EXPECT_NEAR(nu[0], -f.derivatives()[3], 1e-12 * std::max(1.0, std::abs(nu[0])));
+
+    // gamma = -d2/dtau2 f(x + v tau, t + tau) at tau = 0 (qdd = 0): nested AD in tau.
+    const SecondOrder tau = time_variable();
+    auto along = [&](double x, double rate) -> SecondOrder {
+      return constant<SecondOrder>(x) + tau * constant<SecondOrder>(rate);
+    };
+    const SecondOrder path = cam_function(along(q[0], v[0]), along(q[1], v[1]), along(q[3], v[3]), along(t, 1.0));
+    EXPECT_NEAR(gamma[0], -second_derivative(path), 1e-12 * std::max(1.0, std::abs(gamma[0])));
+
+    // Its load: J^T lambda on the coordinates it reads, nothing on the links.
+    AlignedVector<Force> loads(cam_model.num_links(), Force::Zero());
+    VectorX tau_generalized = VectorX::Zero(cam_model.nv);
+    add_constraint_loads(cam_model, cam_data, t, VectorX::Constant(1, 2.5), loads, tau_generalized);
+    EXPECT_LT(relative_error(tau_generalized, 2.5 * J_expected), 1e-12);
+    for (const Force& load : loads) EXPECT_EQ(load.vector().norm(), 0.0);
   }
 }
 
