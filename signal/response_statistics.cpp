@@ -26,7 +26,7 @@ ResponseStatisticsAccumulator::ResponseStatisticsAccumulator(const StatisticsOpt
 
 void ResponseStatisticsAccumulator::add(double x) {
   moments_.add(x);
-  turning_points_.add(x);
+  if (options_.cycles) turning_points_.add(x);
   if (welch_) welch_->add(x);
 }
 
@@ -56,6 +56,7 @@ ResponseStatistics ResponseStatisticsAccumulator::result() {
   r.mean_plus_4_sigma = r.mean + 4.0 * r.standard_deviation;
   r.mean_minus_4_sigma = r.mean - 4.0 * r.standard_deviation;
   if (r.samples == 0) return r;
+  if (!options_.cycles) return with_spectrum(r);
 
   Cycles cycles = zero_upcrossing_cycles(turning_points_.values(), r.mean);
   r.upcrossings = cycles.upcrossings;

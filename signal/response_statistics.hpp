@@ -31,6 +31,9 @@ struct StatisticsOptions {
   /// Whether to fit the Weibull and generalised Pareto laws at the end (a few dozen passes
   /// over the crests); without, their fields stay NaN and the rest is unchanged.
   bool extreme_value_fits = true;
+  /// Whether to keep the turning points (crossings, crests, troughs, MPMs, fits); without,
+  /// only the moments (section 1 of docs/physics/statistics.md) are computed.
+  bool cycles = true;
 };
 
 /// The most probable maximum of one model, over the record and over the duration D.

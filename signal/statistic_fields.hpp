@@ -13,8 +13,12 @@ namespace heavesim::stats {
 /// How a statistic's unit follows from the channel's unit u.
 enum class FieldUnit { signal, none, seconds, count, signal_squared, signal_squared_hz2, signal_squared_hz4 };
 
+/// What a statistic needs: the moments only, the cycles (turning points), or the spectrum.
+enum class FieldGroup { moments, cycles, spectrum };
+
 struct StatisticField {
   const char* name;         // attribute / JSON key
+  FieldGroup group;
   FieldUnit unit;
   const char* description;  // one line, for the table and the docs
   double (*value)(const ResponseStatistics&);

@@ -31,7 +31,6 @@ WelchAccumulator::WelchAccumulator(int segment_length, double sampling_frequency
   segment_.resize(L);
   power_sum_.assign(L / 2 + 1, 0.0);
   transform_.resize(L);
-  fft_.SetFlag(Eigen::FFT<double>::HalfSpectrum);  // real input: bins 0 .. L/2 only
 }
 
 void WelchAccumulator::add(double x) {
@@ -49,7 +48,14 @@ void WelchAccumulator::add_segment() {
   for (double v : buffer_) mean += v;
   mean /= static_cast<double>(L);
   for (std::size_t n = 0; n < L; ++n) segment_[n] = (buffer_[n] - mean) * window_[n];
-  fft_.fwd(transform_, segment_);
+  // One transform object a thread: its plans (twiddle factors per length) are made once,
+  // not once per channel column.
+  thread_local Eigen::FFT<double> fft = [] {
+    Eigen::FFT<double> made;
+    made.SetFlag(Eigen::FFT<double>::HalfSpectrum);  // real input: bins 0 .. L/2 only
+    return made;
+  }();
+  fft.fwd(transform_, segment_);
   for (std::size_t k = 0; k < power_sum_.size(); ++k) power_sum_[k] += std::norm(transform_[k]);
   ++segments_;
 }

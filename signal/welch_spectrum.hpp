@@ -54,7 +54,6 @@ class WelchAccumulator {
   double window_power_ = 0.0;  // sum w_n^2
   int filled_ = 0;
   std::int64_t segments_ = 0;
-  Eigen::FFT<double> fft_;
 };
 
 /// The moments, Tp included, of a density sampled at uniformly spaced frequencies.

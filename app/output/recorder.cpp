@@ -80,7 +80,16 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   channel.statistics = RunningStatistics(width);
-  for (int c = 0; c < width; ++c) channel.response.emplace_back(response_options_, window_samples_);
+  // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
+  // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
+  // series (forces, drivers, compensator signals) and the reactions, not for body and
+  // joint kinematics.
+  stats::StatisticsOptions options = response_options_;
+  if (!has_extreme_statistics(channel)) {
+    options.cycles = false;
+    options.segment_length = -1;
+  }
+  for (int c = 0; c < width; ++c) channel.response.emplace_back(options, window_samples_);
   if (file_) channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
   channels_.push_back(std::move(channel));
 }
@@ -324,15 +333,26 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   ++samples_;
 }
 
+bool Recorder::has_extreme_statistics(const Channel& channel) {
+  if (channel.path == "/time") return false;
+  return channel.columns == 0 || channel.path.find("/reaction_") != std::string::npos;
+}
+
 void Recorder::write_response_statistics(Channel& channel) {
-  std::vector<stats::ResponseStatistics> columns;
-  for (stats::ResponseStatisticsAccumulator& accumulator : channel.response) columns.push_back(accumulator.result());
-  file_->set_attribute(channel.path, "statistics_window_start", evaluate_after());
-  std::vector<double> values(columns.size());
-  for (const stats::StatisticField& field : stats::statistic_fields()) {
-    for (std::size_t c = 0; c < columns.size(); ++c) values[c] = field.value(columns[c]);
-    file_->set_attribute(channel.path, field.name, values);
+  // One compound attribute per channel (a record per column, a field per statistic): one
+  // HDF5 attribute write instead of ~40 keeps the end of a run short (docs/performance.md).
+  const bool extremes = has_extreme_statistics(channel);
+  std::vector<std::string> names;
+  for (const stats::StatisticField& field : stats::statistic_fields())
+    if (extremes || field.group == stats::FieldGroup::moments) names.push_back(field.name);
+  std::vector<double> values;
+  for (stats::ResponseStatisticsAccumulator& accumulator : channel.response) {
+    const stats::ResponseStatistics column = accumulator.result();
+    for (const stats::StatisticField& field : stats::statistic_fields())
+      if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
   }
+  file_->set_attribute(channel.path, "statistics_window_start", evaluate_after());
+  file_->set_record_attribute(channel.path, "statistics", names, values);
 }
 
 double Recorder::channel_maximum(const std::string& path) const {

@@ -79,6 +79,9 @@ class Recorder {
   void add(Channel channel);
   /// The evaluation window's statistics of every column of `channel` as its attributes.
   void write_response_statistics(Channel& channel);
+  /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
+  /// series but /time, and reactions) or the moments only.
+  static bool has_extreme_statistics(const Channel& channel);
   void define_channels(const CaseDefinition& definition);
   /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
   void define_constraint_channels(const OutputSettings& output);

@@ -92,21 +92,29 @@ TEST(StatsCommand, MissingFileOrChannelIsBadInputNamingIt) {
   EXPECT_NE(bad_duration.output.find("--duration: found -5"), std::string::npos) << bad_duration.output;
 }
 
-// The recorder writes the same statistics as attributes of every channel, over the same
-// window: the attribute and `heavesim stats` agree (one streaming pass, one array pass).
+// The recorder writes the same statistics as the `statistics` attribute of every channel,
+// over the same window: it and `heavesim stats` agree (one streaming pass, one array
+// pass). Body kinematics carry the moments only.
 TEST(StatsCommand, RecorderAttributesAgreeWithTheCommand) {
   const std::string file = moored_run("stats_attributes", "8.0e3");
-  const auto stats = run_command_line(heavesim_binary() + " stats " + file + " /joints/surge/q --json");
+  const auto stats = run_command_line(heavesim_binary() + " stats " + file + " /forces/mooring/force_x --json");
   ASSERT_EQ(stats.exit_code, 0) << stats.output;
   const auto attributes = run_command_line(
       "/usr/bin/python3 -c \"import h5py, numpy; a = h5py.File('" + file +
-      "')['joints/surge/q'].attrs; print(', '.join(chr(34) + k + chr(34) + ': ' + repr(float(numpy.ravel(a[k])[0])) for k in "
+      "')['forces/mooring/force_x'].attrs; print(', '.join(chr(34) + k + chr(34) + ': ' + repr(float(a['statistics'][k][0])) for k in "
       "('mpm_rayleigh_duration', 'weibull_shape', 'spectral_m2', 'significant_crest')))\"");
   ASSERT_EQ(attributes.exit_code, 0) << attributes.output;
   for (const char* name : {"mpm_rayleigh_duration", "weibull_shape", "spectral_m2", "significant_crest"}) {
     const double command = json_value(stats.output, name), recorded = json_value(attributes.output, name);
     EXPECT_NEAR(recorded, command, 1e-9 * std::abs(command)) << name << "\n" << attributes.output;
   }
+  const auto fields = run_command_line("/usr/bin/python3 -c \"import h5py; f = h5py.File('" + file +
+                                       "'); print(f['bodies/barge/position'].attrs['statistics'].dtype.names, "
+                                       "f['joints/surge/reaction_force'].attrs['statistics'].shape)\"");
+  EXPECT_NE(fields.output.find("'kurtosis', 'mean_plus_4_sigma', 'mean_minus_4_sigma')"), std::string::npos)
+      << fields.output;  // the moments, and nothing after them
+  EXPECT_EQ(fields.output.find("upcrossings"), std::string::npos) << fields.output;
+  EXPECT_NE(fields.output.find("(3,)"), std::string::npos) << fields.output;          // one record per column
 }
 
 // docs/result-file.md names every attribute the recorder writes (its statistics table).
