@@ -8,9 +8,13 @@
 
 namespace heavesim::stats {
 
-double SpectralMoments::zero_upcrossing_period() const { return std::sqrt(m0 / m2); }
+double SpectralMoments::zero_upcrossing_period() const {
+  if (!(m0 > 0.0 && m2 > 0.0)) return std::numeric_limits<double>::quiet_NaN();  // no variance: no period
+  return std::sqrt(m0 / m2);
+}
 
 double SpectralMoments::bandwidth() const {
+  if (!(m0 > 0.0 && m4 > 0.0)) return std::numeric_limits<double>::quiet_NaN();
   const double ratio = m2 * m2 / (m0 * m4);
   return std::sqrt(std::max(0.0, 1.0 - ratio));
 }

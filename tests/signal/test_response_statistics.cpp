@@ -311,6 +311,13 @@ TEST(ResponseStatistics, ConstantAndShortSignalsGiveNaNNotNonsense) {
   EXPECT_TRUE(std::isnan(r.rayleigh.duration));
   EXPECT_TRUE(std::isnan(r.weibull.shape));
   EXPECT_EQ(r.maximum, 2.5);
+  StatisticsOptions with_spectrum;
+  with_spectrum.time_step = 0.1;
+  const ResponseStatistics spectral = response_statistics(flat, with_spectrum);
+  EXPECT_EQ(spectral.spectrum.m0, 0.0);  // the segment means are removed: nothing left
+  EXPECT_TRUE(std::isnan(spectral.spectrum.zero_upcrossing_period()));
+  EXPECT_TRUE(std::isnan(spectral.spectrum.bandwidth()));
+  EXPECT_TRUE(std::isnan(spectral.spectrum.peak_period));
   EXPECT_THROW(response_statistics(flat, without_spectrum(0.0)), std::invalid_argument);
 }
 
