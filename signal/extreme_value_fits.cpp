@@ -32,22 +32,34 @@ WeibullFit fit_weibull(const std::vector<double>& values, std::int64_t minimum_s
     mean_log += std::log(v);
   }
   mean_log /= static_cast<double>(y.size());
-  auto equation = [&y, mean_log](double k) {
-    double sum_power = 0.0, sum_power_log = 0.0;
-    for (double v : y) {
-      const double p = std::pow(v, k);
-      sum_power += p;
-      sum_power_log += p * std::log(v);
+  std::vector<double> logs(y.size());
+  for (std::size_t i = 0; i < y.size(); ++i) logs[i] = std::log(y[i]);
+  // g(k) = S1/S0 - 1/k - mean(ln y) with S_j = sum y^k (ln y)^j, and
+  // g'(k) = (S2 S0 - S1^2) / S0^2 + 1/k^2 > 0: Newton, kept inside the bracket where g
+  // changes sign (a bisection step on ln k whenever Newton would leave it).
+  auto equation = [&logs, mean_log](double k, double* slope) {
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0;
+    for (double l : logs) {
+      const double p = std::exp(k * l);
+      s0 += p;
+      s1 += p * l;
+      s2 += p * l * l;
     }
-    return sum_power_log / sum_power - 1.0 / k - mean_log;
+    *slope = (s2 * s0 - s1 * s1) / (s0 * s0) + 1.0 / (k * k);
+    return s1 / s0 - 1.0 / k - mean_log;
   };
-  double low = std::log(1e-3), high = std::log(1e3);
-  if (equation(std::exp(low)) > 0.0 || equation(std::exp(high)) < 0.0) return fit;
-  for (int iteration = 0; iteration < 100 && high - low > 1e-14; ++iteration) {
-    const double middle = 0.5 * (low + high);
-    (equation(std::exp(middle)) < 0.0 ? low : high) = middle;
+  double slope = 0.0, low = 1e-3, high = 1e3;
+  if (equation(low, &slope) > 0.0 || equation(high, &slope) < 0.0) return fit;
+  double k = 1.0;
+  for (int iteration = 0; iteration < 200; ++iteration) {
+    const double value = equation(k, &slope);
+    (value < 0.0 ? low : high) = k;
+    double next = k - value / slope;
+    if (!(next > low && next < high)) next = std::sqrt(low * high);  // bisection on ln k
+    const bool converged = std::abs(next - k) <= 1e-12 * k;
+    k = next;
+    if (converged || high / low - 1.0 < 1e-12) break;
   }
-  const double k = std::exp(0.5 * (low + high));
   double mean_power = 0.0;
   for (double v : y) mean_power += std::pow(v, k);
   mean_power /= static_cast<double>(y.size());

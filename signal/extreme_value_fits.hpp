@@ -26,7 +26,7 @@ struct WeibullFit {
 /// Maximum-likelihood fit to the positive values of `y` (at least `minimum_samples` of
 /// them, else a fit of NaN). The likelihood equation for the shape,
 ///   sum y^k ln y / sum y^k - 1/k - mean(ln y) = 0,
-/// is increasing in k and solved by bisection on ln k; the scale follows as
+/// is increasing in k and solved by Newton's method safeguarded by bisection; the scale follows as
 /// (mean y^k)^(1/k) (Cohen 1965, Technometrics 7(4)).
 WeibullFit fit_weibull(const std::vector<double>& y, std::int64_t minimum_samples = 10);
 
