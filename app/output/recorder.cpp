@@ -351,7 +351,6 @@ void Recorder::write_response_statistics(Channel& channel) {
     for (const stats::StatisticField& field : stats::statistic_fields())
       if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
   }
-  file_->set_attribute(channel.path, "statistics_window_start", evaluate_after());
   file_->set_record_attribute(channel.path, "statistics", names, values);
 }
 
@@ -370,6 +369,7 @@ void Recorder::finish() {
     file_->set_attribute(channel.path, "standard_deviation", channel.statistics.standard_deviation());
     write_response_statistics(channel);
   }
+  file_->set_attribute("/", "statistics_window_start", evaluate_after());
   file_->set_attribute("/summary", "samples", samples_);
   if (records_energy_) file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
   compensators_.write(*file_);

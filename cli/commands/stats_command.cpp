@@ -75,7 +75,7 @@ int stats_command(const StatsOptions& options) {
                        fmt::format("a uniform step ({} s)", dt));
 
   // The window: --after, else the one the run evaluated (output.evaluate_after).
-  const double after = options.after.value_or(reader.number_attribute("/time", "statistics_window_start").value_or(time.front()));
+  const double after = options.after.value_or(reader.number_attribute("/", "statistics_window_start").value_or(time.front()));
   const auto first = static_cast<hsize_t>(std::lower_bound(time.begin(), time.end(), after - 1e-9 * std::max(1.0, std::abs(after))) - time.begin());
   if (first + 2 > samples)
     throw InputError(SourceLocation{"--after", 0, 0}, "", fmt::format("{} s", after),

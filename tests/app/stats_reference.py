@@ -4,7 +4,7 @@
     stats_reference.py RESULT.h5 CHANNEL STATS.json DURATION
 
 Recomputes the statistics of column 0 of CHANNEL with numpy and scipy from the file's
-samples (the window starting at /time's statistics_window_start), straight from the
+samples (the window starting at the root attribute statistics_window_start), straight from the
 definitions of docs/physics/statistics.md, and compares them with heavesim's JSON.
 Prints each comparison; exits 1 if any differs beyond its tolerance.
 """
@@ -21,7 +21,7 @@ with h5py.File(path, "r") as f:
     n = int(f.attrs["samples_written"])
     t = f["time"][:n]
     x = np.asarray(f[channel][:n], dtype=float).reshape(n, -1)[:, 0]
-    start = float(f["time"].attrs["statistics_window_start"])
+    start = float(f.attrs["statistics_window_start"])
 with open(json_path) as handle:
     mine = json.load(handle)["channels"][0]["statistics"]
 
