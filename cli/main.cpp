@@ -69,6 +69,14 @@ int main(int argc, char** argv) {
   import_mksim->add_option("model", mksim_path, "MKSim model file")->required();
   import_mksim->add_option("-o,--output", mksim_case_path, "case file to write (YAML)")->required();
 
+  StatsOptions stats_options;
+  CLI::App* stats = app.add_subcommand("stats", "response statistics and extremes of a result file's channels");
+  stats->add_option("result", stats_options.result_path, "result file (HDF5)")->required();
+  stats->add_option("channels", stats_options.channels, "dataset paths, e.g. /joints/hook/reaction_force; default all");
+  stats->add_option("--duration", stats_options.duration, "s, duration of the most probable maxima (default 10800 = 3 h)");
+  stats->add_option("--after", stats_options.after, "s, start of the window (default the run's output.evaluate_after)");
+  stats->add_flag("--json", stats_options.json, "print JSON instead of tables");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -82,6 +90,7 @@ int main(int argc, char** argv) {
     if (*equilibrium) return equilibrium_command(equilibrium_options);
     if (*validate) return validate_command(validation_names, list_only);
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
+    if (*stats) return stats_command(stats_options);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
     return 2;

@@ -22,7 +22,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 # Top-level libraries, lowest first; a tuple holds peers.
 LAYERS = [
     ("kernel",),
-    ("hydro", "control", "samples"),
+    ("hydro", "control", "samples", "signal"),
     ("io",),
     ("app",),
     ("validation",),

@@ -7,6 +7,7 @@
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
+#include "signal/statistic_fields.hpp"
 
 namespace heavesim {
 namespace {
@@ -45,6 +46,9 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* f
       file_(file),
       csv_(csv),
       compensators_(*scene.system, scene.summarised, definition.output.evaluate_after) {
+  response_options_.time_step = definition.output.interval;
+  const double window = definition.solver.t_end - std::max(definition.solver.t_start, evaluate_after());
+  window_samples_ = std::max<std::int64_t>(0, std::llround(window / definition.output.interval) + 1);
   define_channels(definition);
   for (const ExtraChannel& extra : extra_channels)
     add({extra.path, 0, extra.units, extra.description, {}, [value = extra.value](double, double* out) { out[0] = value(); }});
@@ -76,6 +80,16 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   channel.statistics = RunningStatistics(width);
+  // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
+  // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
+  // series (forces, drivers, compensator signals) and the reactions, not for body and
+  // joint kinematics.
+  stats::StatisticsOptions options = response_options_;
+  if (!has_extreme_statistics(channel)) {
+    options.cycles = false;
+    options.segment_length = -1;
+  }
+  for (int c = 0; c < width; ++c) channel.response.emplace_back(options, window_samples_);
   if (file_) channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
   channels_.push_back(std::move(channel));
 }
@@ -295,10 +309,13 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   }
   require_stages(system.data(), stages, t, evaluation);
   csv_row_.clear();
+  const bool in_window = compensators_.in_window(t);
   for (Channel& channel : channels_) {
     row_.resize(std::max(channel.columns, 1));
     channel.fill(t, row_.data());
     channel.statistics.add(row_.data());
+    if (in_window)
+      for (std::size_t c = 0; c < channel.response.size(); ++c) channel.response[c].add(row_[c]);
     if (file_) file_->append(channel.series, row_.data());
     if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
   }
@@ -316,6 +333,27 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   ++samples_;
 }
 
+bool Recorder::has_extreme_statistics(const Channel& channel) {
+  if (channel.path == "/time") return false;
+  return channel.columns == 0 || channel.path.find("/reaction_") != std::string::npos;
+}
+
+void Recorder::write_response_statistics(Channel& channel) {
+  // One compound attribute per channel (a record per column, a field per statistic): one
+  // HDF5 attribute write instead of ~40 keeps the end of a run short (docs/performance.md).
+  const bool extremes = has_extreme_statistics(channel);
+  std::vector<std::string> names;
+  for (const stats::StatisticField& field : stats::statistic_fields())
+    if (extremes || field.group == stats::FieldGroup::moments) names.push_back(field.name);
+  std::vector<double> values;
+  for (stats::ResponseStatisticsAccumulator& accumulator : channel.response) {
+    const stats::ResponseStatistics column = accumulator.result();
+    for (const stats::StatisticField& field : stats::statistic_fields())
+      if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
+  }
+  file_->set_record_attribute(channel.path, "statistics", names, values);
+}
+
 double Recorder::channel_maximum(const std::string& path) const {
   for (const Channel& channel : channels_)
     if (channel.path == path) return channel.statistics.maximum()[0];
@@ -324,12 +362,14 @@ double Recorder::channel_maximum(const std::string& path) const {
 
 void Recorder::finish() {
   if (!file_) return;
-  for (const Channel& channel : channels_) {
+  for (Channel& channel : channels_) {
     file_->set_attribute(channel.path, "minimum", channel.statistics.minimum());
     file_->set_attribute(channel.path, "maximum", channel.statistics.maximum());
     file_->set_attribute(channel.path, "mean", channel.statistics.mean());
     file_->set_attribute(channel.path, "standard_deviation", channel.statistics.standard_deviation());
+    write_response_statistics(channel);
   }
+  file_->set_attribute("/", "statistics_window_start", evaluate_after());
   file_->set_attribute("/summary", "samples", samples_);
   if (records_energy_) file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
   compensators_.write(*file_);

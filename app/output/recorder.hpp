@@ -12,6 +12,7 @@
 #include "app/output/result_file.hpp"
 #include "app/output/running_statistics.hpp"
 #include "app/scene/scene.hpp"
+#include "signal/response_statistics.hpp"
 
 namespace heavesim {
 
@@ -37,7 +38,9 @@ class Recorder {
   void record_evaluation(double t, const VectorX& y);
   /// Whether the channels read joint wrenches (an evaluation must compute reactions).
   bool needs_reactions() const { return needs_reactions_; }
-  /// Writes per-channel statistics as dataset attributes and the /summary group.
+  /// Writes per-channel statistics as dataset attributes (whole-record minimum, maximum,
+  /// mean, standard_deviation; the evaluation window's stats::statistic_fields()) and the
+  /// /summary group.
   void finish();
 
   long samples() const { return samples_; }
@@ -68,9 +71,17 @@ class Recorder {
     std::vector<std::string> labels;  // CSV column suffixes
     std::function<void(double t, double* out)> fill;
     int series = -1;
-    RunningStatistics statistics = {};
+    RunningStatistics statistics = {};  // over the whole record
+    /// Per column, over the evaluation window: the response statistics of
+    /// docs/physics/statistics.md (moments, crossings, peaks, extremes, Welch spectrum).
+    std::vector<stats::ResponseStatisticsAccumulator> response = {};
   };
   void add(Channel channel);
+  /// The evaluation window's statistics of every column of `channel` as its attributes.
+  void write_response_statistics(Channel& channel);
+  /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
+  /// series but /time, and reactions) or the moments only.
+  static bool has_extreme_statistics(const Channel& channel);
   void define_channels(const CaseDefinition& definition);
   /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
   void define_constraint_channels(const OutputSettings& output);
@@ -86,6 +97,8 @@ class Recorder {
   bool needs_reactions_ = false;
   bool records_energy_ = false;  // output.energy: the energy channels and the drift summary
   std::vector<double> row_, csv_row_;
+  stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
+  std::int64_t window_samples_ = 0;             // samples expected in the evaluation window
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;

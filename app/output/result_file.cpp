@@ -141,6 +141,17 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
   write_attribute(object_path, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
 }
 
+void ResultFile::set_record_attribute(const std::string& object_path, const std::string& name,
+                                     const std::vector<std::string>& fields, const std::vector<double>& values) {
+  const Handle type(H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double)));
+  check(type.valid(), "cannot write result file");
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    check(H5Tinsert(type.get(), fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE) >= 0, "cannot write result file");
+  const hsize_t rows = fields.empty() ? 0 : values.size() / fields.size();
+  const Handle space(H5Screate_simple(1, &rows, nullptr));
+  write_attribute(object_path, name, type.get(), space.get(), values.data());
+}
+
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
   check_usable();
   const Handle type = hdf5::variable_text_type();

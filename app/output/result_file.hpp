@@ -64,6 +64,10 @@ class ResultFile {
   void set_attribute(const std::string& object_path, const std::string& name, double value);
   void set_attribute(const std::string& object_path, const std::string& name, long value);
   void set_attribute(const std::string& object_path, const std::string& name, const std::vector<double>& values);
+  /// A compound attribute: one record per row of `values` (row-major, fields.size() numbers a
+  /// row), each a double field per name; h5py reads it as a numpy structured array.
+  void set_record_attribute(const std::string& object_path, const std::string& name,
+                            const std::vector<std::string>& fields, const std::vector<double>& values);
 
   /// A fixed string dataset (e.g. /case/yaml).
   void write_text(const std::string& dataset_path, const std::string& text, const std::string& description);

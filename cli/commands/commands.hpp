@@ -1,6 +1,7 @@
 #pragma once
 // The heavesim subcommands. Each returns the process exit code:
 // 0 success, 2 bad input, 3 numerical failure, 1 anything else.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,16 @@ int equilibrium_command(const EquilibriumOptions& options);
 void print_equilibrium_summary(const Scene& scene);
 
 int validate_command(const std::vector<std::string>& names, bool list_only);
+
+struct StatsOptions {
+  std::string result_path;
+  std::vector<std::string> channels;  // dataset paths; empty: every time series
+  double duration = 10800.0;          // s, D of the most probable maxima (3 h)
+  std::optional<double> after;        // s, window start; default the run's output.evaluate_after
+  bool json = false;
+};
+/// heavesim stats: response statistics of a result file's channels (docs/physics/statistics.md).
+int stats_command(const StatsOptions& options);
 
 /// heavesim import-mksim: the MKSim model at `model_path` written as the case `case_path`.
 int import_mksim_command(const std::string& model_path, const std::string& case_path);

@@ -180,6 +180,33 @@ std::optional<std::string> Reader::text_attribute(const std::string& object, con
   return texts.empty() ? std::string() : texts.front();
 }
 
+std::optional<double> Reader::number_attribute(const std::string& object, const std::string& name) const {
+  if (H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+  const Handle attribute(H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+  const Handle type(H5Aget_type(attribute.get()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  if (type_class != H5T_INTEGER && type_class != H5T_FLOAT)
+    fail(object, "a '" + name + "' attribute that is not a number", "a number");
+  const Handle space(H5Aget_space(attribute.get()));
+  const hssize_t points = H5Sget_simple_extent_npoints(space.get());
+  if (points < 1) fail(object, "an empty '" + name + "' attribute", "a number");
+  std::vector<double> values(static_cast<std::size_t>(points));
+  if (H5Aread(attribute.get(), H5T_NATIVE_DOUBLE, values.data()) < 0)
+    fail(object, "a '" + name + "' attribute that cannot be read", "a readable number");
+  return values.front();
+}
+
+std::vector<std::string> Reader::datasets() const {
+  std::vector<std::string> names;
+  auto visit = [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {
+    if (info->type == H5O_TYPE_DATASET) static_cast<std::vector<std::string>*>(data)->push_back(std::string("/") + name);
+    return 0;
+  };
+  if (H5Ovisit2(file_.get(), H5_INDEX_NAME, H5_ITER_INC, visit, &names, H5O_INFO_BASIC) < 0)
+    fail("/", "a group tree that cannot be listed (damaged file)", "a readable file");
+  return names;
+}
+
 std::vector<std::string> Reader::dimension_names(const std::string& dataset) const {
   const Handle id = open_dataset(dataset);
   std::vector<std::string> names(dataspace_shape(id.get()).size());

@@ -40,6 +40,10 @@ class Reader {
   std::vector<std::string> read_strings(const std::string& dataset) const;
   /// The dataset's string attribute `name`, if it has one.
   std::optional<std::string> text_attribute(const std::string& object, const std::string& name) const;
+  /// The object's numeric attribute `name` (its first element, as double), if it has one.
+  std::optional<double> number_attribute(const std::string& object, const std::string& name) const;
+  /// Every dataset in the file, as absolute paths, in HDF5's (alphabetical) order.
+  std::vector<std::string> datasets() const;
   /// The dataset's dimension names (netCDF4: the names of the dimension scales attached
   /// to each axis, H5DS); "" for an axis with none.
   std::vector<std::string> dimension_names(const std::string& dataset) const;

@@ -1,0 +1,36 @@
+#pragma once
+// One-pass central moments of a sampled signal up to the fourth, numerically stable:
+// the update of Terriberry (2007) / Pébay (2008, Sandia report SAND2008-6212, eq. 2.1-2.4),
+// which carries M2, M3, M4 (sums of powers of deviations from the running mean) so that no
+// large sums of raw powers cancel.
+#include <cstdint>
+#include <limits>
+
+namespace heavesim::stats {
+
+class MomentAccumulator {
+ public:
+  void add(double x);
+
+  std::int64_t count() const { return count_; }
+  double mean() const { return count_ > 0 ? mean_ : nan(); }
+  double minimum() const { return count_ > 0 ? minimum_ : nan(); }
+  double maximum() const { return count_ > 0 ? maximum_ : nan(); }
+  /// Sample standard deviation, sqrt(M2 / (n - 1)) (units of the signal).
+  double standard_deviation() const;
+  /// Moment coefficient of skewness g1 = m3 / m2^(3/2) with m_k = M_k / n (the biased
+  /// estimator; scipy.stats.skew(bias=True)); NaN for a constant signal.
+  double skewness() const;
+  /// Pearson's kurtosis m4 / m2^2 (3 for a Gaussian; scipy.stats.kurtosis(fisher=False,
+  /// bias=True)); NaN for a constant signal.
+  double kurtosis() const;
+
+ private:
+  static double nan() { return std::numeric_limits<double>::quiet_NaN(); }
+  std::int64_t count_ = 0;
+  double mean_ = 0.0, m2_ = 0.0, m3_ = 0.0, m4_ = 0.0;
+  double minimum_ = std::numeric_limits<double>::infinity();
+  double maximum_ = -std::numeric_limits<double>::infinity();
+};
+
+}  // namespace heavesim::stats
