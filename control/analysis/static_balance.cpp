@@ -50,7 +50,7 @@ double static_stroke_load(const Model& model, Data& data, const MultibodySystem&
   // The least-squares (F, lambda) of minimum norm (complete orthogonal decomposition, so
   // redundant rows are allowed); set-up code, so the matrices are allocated here.
   MatrixX jacobian(model.num_constraint_rows, model.nv);
-  constraint_jacobian(model, data, jacobian);
+  constraint_jacobian(model, data, t0, jacobian);
   MatrixX loads(model.nv, 1 + model.num_constraint_rows);
   loads << unit, jacobian.transpose();
   const double threshold = 1e-10;
