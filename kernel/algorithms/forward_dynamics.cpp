@@ -7,8 +7,7 @@ const VectorX& composite_rigid_body_forward_dynamics(const Model& model, Data& d
   data.qdd.setZero();
   const VectorX& bias = inverse_dynamics(model, data, data.qdd, external_forces_world);  // C(q, v) - Q_ext
   data.qdd = tau - bias;
-  data.mass_matrix_cholesky.compute(mass_matrix(model, data));
-  data.mass_matrix_cholesky.solveInPlace(data.qdd);
+  factorize_mass_matrix(model, data).solveInPlace(data.qdd);
   data.stages.accelerations_computed();
   return data.qdd;
 }

@@ -29,4 +29,12 @@ const MatrixX& crba(const Model& model, Data& data, const VectorX& q) {
   return mass_matrix(model, data);
 }
 
+const Eigen::LLT<MatrixX>& factorize_mass_matrix(const Model& model, Data& data) {
+  if (!(data.stages.current & StageMarker::mass_factor)) {
+    data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+    data.stages.current |= StageMarker::mass_factor;
+  }
+  return data.mass_matrix_cholesky;
+}
+
 }  // namespace heavesim

@@ -8,6 +8,11 @@ namespace heavesim {
 /// M(q) from the current position stage; fills data.mass_matrix (both triangles).
 const MatrixX& mass_matrix(const Model& model, Data& data);
 
+/// M(q) and its Cholesky factor (data.mass_matrix, data.mass_matrix_cholesky) at the
+/// current position stage, computed once per configuration: a second call on the same
+/// positions returns the factor held (StageMarker::mass_factor).
+const Eigen::LLT<MatrixX>& factorize_mass_matrix(const Model& model, Data& data);
+
 /// Full pipeline crba(model, data, q).
 const MatrixX& crba(const Model& model, Data& data, const VectorX& q);
 

@@ -38,7 +38,7 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, double t
     result.position_residual = data.constraint_residual.cwiseAbs().maxCoeff();
     if (result.position_residual <= tolerance || result.iterations >= max_iterations) break;
     constraint_jacobian(model, data, t, data.constraint_jacobian);
-    data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+    factorize_mass_matrix(model, data);
     minimum_energy_correction(data, data.constraint_residual);
     data.projection_configuration = q;
     integrate_configuration(model, data.projection_configuration, data.projection_step, 1.0, q);
@@ -49,7 +49,7 @@ ProjectionResult project_to_constraints(const Model& model, Data& data, double t
   // Velocities: v -= M^-1 J^T (J M^-1 J^T)^+ (J v - nu) at the projected configuration.
   constraint_jacobian(model, data, t, data.constraint_jacobian);
   constraint_velocity_target(model, data, t, data.constraint_velocity_target);
-  data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+  factorize_mass_matrix(model, data);
   data.constraint_bias.noalias() = data.constraint_jacobian * v;  // workspace: J v - nu
   data.constraint_bias -= data.constraint_velocity_target;
   minimum_energy_correction(data, data.constraint_bias);

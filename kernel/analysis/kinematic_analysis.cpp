@@ -13,15 +13,15 @@ namespace heavesim {
 namespace {
 
 /// J at the current position stage and its minimum-norm factorization in the metric; for
-/// the mass metric, M's Cholesky factor is recomputed at this stage when `update_metric`
-/// (else the one in data is kept: within a time point's Newton iterations the metric only
-/// chooses among the solutions of J dq = -Phi, and M moves by O(|dq|) there).
+/// the mass metric, M's Cholesky factor is taken at this stage when `update_metric` (else
+/// the one in data is kept: in the Newton iterations the metric only chooses among the
+/// solutions of J dq = -Phi, and the factor of the last solved point, O(h) away, serves).
 void factorize_constraints(const Model& model, Data& data, KinematicWorkspace& workspace,
                            const KinematicSettings& settings, double t, bool update_metric) {
   constraint_jacobian(model, data, t, data.constraint_jacobian);
   const Eigen::LLT<MatrixX>* metric = nullptr;
   if (settings.weighting == MotionWeighting::mass) {
-    if (update_metric) data.mass_matrix_cholesky.compute(mass_matrix(model, data));
+    if (update_metric) factorize_mass_matrix(model, data);
     metric = &data.mass_matrix_cholesky;
   }
   workspace.solver.factorize(data.constraint_jacobian, metric, kinematic_rank_threshold);
@@ -38,7 +38,8 @@ double equation_error(const Model& model, Data& data, const VectorX& q, double t
 
 KinematicWorkspace::KinematicWorkspace(const Model& model)
     : solver(model.nv, model.num_constraint_rows),
-      svd(model.nv, model.num_constraint_rows),
+      triangle(MatrixX::Zero(std::min(model.nv, model.num_constraint_rows), model.num_constraint_rows)),
+      svd(static_cast<int>(triangle.rows()), model.num_constraint_rows),
       step(VectorX::Zero(model.nv)),
       trial(VectorX::Zero(model.nq)),
       rhs(VectorX::Zero(model.num_constraint_rows)),
@@ -59,7 +60,8 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
       break;
     }
     if (point.newton_iterations >= settings.max_iterations) break;
-    factorize_constraints(model, data, workspace, settings, t, point.newton_iterations == 0);
+    factorize_constraints(model, data, workspace, settings, t, !workspace.metric_held);
+    workspace.metric_held = true;
     workspace.rhs = -data.constraint_residual;
     workspace.solver.solve(workspace.rhs, workspace.step);  // J dq = -Phi, minimum-norm in W
     const double full_norm = data.constraint_residual.norm();
@@ -89,9 +91,10 @@ KinematicPoint solve_positions(const Model& model, Data& data, KinematicWorkspac
     factorize_constraints(model, data, workspace, settings, t, true);
     point.rank = workspace.solver.rank();
     if (workspace.reference_rank < 0) workspace.reference_rank = point.rank;
-    // sigma_rank / sigma_max of the weighted Jacobian A = J L^-T (the singular values of
-    // A^T, which the solver holds).
-    workspace.svd.compute(workspace.solver.scaled_jacobian_transpose());
+    // sigma_rank / sigma_max of the weighted Jacobian A = J L^-T: the singular values of
+    // the QR's R factor (square when nv >= m), so that the SVD needs no QR of its own.
+    workspace.solver.triangular_factor(workspace.triangle);
+    workspace.svd.compute(workspace.triangle);
     const VectorX& sigma = workspace.svd.singularValues();
     const int k = workspace.reference_rank - 1;
     point.singular_ratio = (k >= 0 && k < sigma.size() && sigma[0] > 0.0) ? sigma[k] / sigma[0] : 1.0;

@@ -51,11 +51,14 @@ inline constexpr double kinematic_rank_threshold = 1e-10;
 struct KinematicWorkspace {
   explicit KinematicWorkspace(const Model& model);
   MinimumNormSolver solver;            // J in the metric W, factorized at the current q
-  Eigen::JacobiSVD<MatrixX> svd;       // singular values of the weighted J
+  MatrixX triangle;                    // min(nv, m) x m: the solver's R factor
+  Eigen::JacobiSVD<MatrixX> svd;       // its singular values: those of the weighted J
   VectorX step;                        // nv: Newton step
   VectorX trial;                       // nq: configuration tried by the line search
   VectorX rhs;                         // m
   VectorX predicted;                   // nv: h v + h^2/2 a
+  /// Whether data holds M's factor of a solved point (the Newton iterations' metric).
+  bool metric_held = false;
   /// The rank of J at the first point: the reference for singular configurations.
   int reference_rank = -1;
 };

@@ -73,6 +73,12 @@ class MinimumNormSolver {
   int pivot_row(int k) const { return qr_.colsPermutation().indices()[k]; }
   /// A^T = L^-1 J^T of the last factorization (nv x m).
   const MatrixX& scaled_jacobian_transpose() const { return scaled_transpose_; }
+  /// Copies the triangular factor R of A^T P = Q R (its top min(nv, m) rows, below the
+  /// diagonal zeroed) into `triangle` (sized min(nv, m) x m by the caller): R has the
+  /// singular values of A, as Q is orthogonal and P a permutation, on a smaller matrix.
+  void triangular_factor(MatrixX& triangle) const {
+    triangle = qr_.matrixQR().topRows(triangle.rows()).template triangularView<Eigen::Upper>();
+  }
 
  private:
   MatrixX scaled_transpose_;

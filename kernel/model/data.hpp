@@ -24,8 +24,11 @@ using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 /// evaluation too (the old accelerations and wrenches are gone); new accelerations
 /// leave the reactions of the old ones behind. The system that evaluates at a time t
 /// records t. A reader keeps the evaluation number and asks require_stages().
+/// mass_factor marks a position-level product: M(q) and its Cholesky factor at this
+/// evaluation's positions (factorize_mass_matrix), kept while only speeds or
+/// accelerations change, so that the solves of one configuration factorize M once.
 struct StageMarker {
-  enum Stage : unsigned { positions = 1u, velocities = 2u, accelerations = 4u, reactions = 8u };
+  enum Stage : unsigned { positions = 1u, velocities = 2u, accelerations = 4u, reactions = 8u, mass_factor = 16u };
   unsigned current = 0;  // bits of the stages computed in this evaluation
   long evaluation = 0;   // advanced by every position or velocity stage
   double time = std::numeric_limits<double>::quiet_NaN();  // s, of this evaluation (NaN: not recorded)
@@ -36,15 +39,22 @@ struct StageMarker {
     time = std::numeric_limits<double>::quiet_NaN();
   }
   void velocities_computed() {
-    current = (current & positions) | velocities;
+    current = (current & (positions | mass_factor)) | velocities;
     ++evaluation;
     time = std::numeric_limits<double>::quiet_NaN();
   }
-  void accelerations_computed() { current = (current & (positions | velocities)) | accelerations; }
+  void accelerations_computed() { current = (current & (positions | velocities | mass_factor)) | accelerations; }
   void reactions_computed() { current |= reactions; }
   /// An inverse-dynamics pass for an acceleration of the caller's overwrote the
   /// acceleration stage and the joint wrenches.
-  void accelerations_overwritten() { current &= positions | velocities; }
+  void accelerations_overwritten() { current &= positions | velocities | mass_factor; }
+  /// The positions and speeds asked for are those already held: a new evaluation whose
+  /// position and velocity stages (and M's factor) stand; nothing derived from forces does.
+  void same_state_again() {
+    current &= positions | velocities | mass_factor;
+    ++evaluation;
+    time = std::numeric_limits<double>::quiet_NaN();
+  }
 };
 
 struct Data {
@@ -78,7 +88,7 @@ struct Data {
   // --- mass matrix (CRBA) ---
   AlignedVector<Matrix6> composite_inertia_world;
   MatrixX mass_matrix;                            // nv x nv, both triangles filled
-  Eigen::LLT<MatrixX> mass_matrix_cholesky;
+  Eigen::LLT<MatrixX> mass_matrix_cholesky;     // of mass_matrix; current with StageMarker::mass_factor
 
   // --- constraints (closed loops); sized m = model.num_constraint_rows ---
   VectorX constraint_residual;      // Phi (m)

@@ -58,6 +58,13 @@ void MultibodySystem::compute_kinematics(const VectorX& y) {
   const Model& model = *model_;
   q_ = y.head(model.nq);
   v_ = y.segment(model.nq, model.nv);
+  // The state the stages already hold (a kinematic analysis evaluates the loads at the
+  // point it has just solved): the position-level work (transforms, M's factor) stands.
+  constexpr unsigned held = StageMarker::positions | StageMarker::velocities;
+  if ((data_.stages.current & held) == held && data_.q == q_ && data_.v == v_) {
+    data_.stages.same_state_again();
+    return;
+  }
   update_positions(model, data_, q_);
   update_velocities(model, data_, q_, v_);
 }
@@ -188,7 +195,7 @@ void MultibodySystem::evaluate_prescribed(double t, const VectorX& y, const Vect
     // The multipliers that best supply f = M qdd + C - tau (exact for a dynamically
     // consistent motion, f in the range of J^T); what remains is the dynamic residual.
     constraint_jacobian(model, data_, t, data_.constraint_jacobian);
-    data_.mass_matrix_cholesky.compute(mass_matrix(model, data_));
+    factorize_mass_matrix(model, data_);
     minimum_norm_multipliers(dynamic_residual_);
     dynamic_residual_.noalias() -= data_.constraint_jacobian.transpose() * data_.constraint_multipliers;
   }
