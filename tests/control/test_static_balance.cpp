@@ -18,21 +18,26 @@ namespace {
 
 constexpr double platform_mass = 1.0e6, load_mass = 2.9e5, g = 9.81;  // kg, kg, m/s^2
 
+/// A joint of `kind` about or along `axis` (parent frame), its frame at `position` in the parent.
+JointDefinition joint(const std::string& name, JointKind kind, const Vector3& axis, const std::string& parent,
+                      const std::string& child, const Vector3& position = Vector3::Zero()) {
+  JointDefinition definition;
+  definition.name = name;
+  definition.kind = kind;
+  definition.axis = axis;
+  definition.parent = parent;
+  definition.child = child;
+  definition.X_parent_joint = Transform(Matrix3::Identity(), position);
+  return definition;
+}
+
 std::shared_ptr<const Model> platform_and_load() {
   ModelBuilder builder;
   builder.set_gravity(Vector3(0.0, 0.0, -g));
   builder.add_body({"platform", Inertia(platform_mass, Vector3::Zero(), Matrix3::Identity() * 1e8), std::nullopt});
   builder.add_body({"load", Inertia(load_mass, Vector3(0.3, 0.0, 1.0), Matrix3::Identity() * 1e6), std::nullopt});
-  for (const auto& [name, parent, child] :
-       {std::tuple{"heave", ModelBuilder::ground_name, "platform"}, std::tuple{"stroke", "platform", "load"}}) {
-    JointDefinition joint;
-    joint.name = name;
-    joint.kind = JointKind::prismatic;
-    joint.axis = Vector3::UnitZ();
-    joint.parent = parent;
-    joint.child = child;
-    builder.add_joint(joint);
-  }
+  builder.add_joint(joint("heave", JointKind::prismatic, Vector3::UnitZ(), ModelBuilder::ground_name, "platform"));
+  builder.add_joint(joint("stroke", JointKind::prismatic, Vector3::UnitZ(), "platform", "load"));
   return std::make_shared<const Model>(builder.build());
 }
 
@@ -79,21 +84,9 @@ TEST(StaticBalance, StaticLoadCountsWhatTheLoopsCarry) {
   builder.set_gravity(Vector3(0.0, 0.0, -g));
   builder.add_body({"beam", Inertia(beam_mass, Vector3(c, 0.0, 0.0), Matrix3::Identity() * 50.0), std::nullopt});
   builder.add_body({"slider", Inertia(slider_mass, Vector3::Zero(), Matrix3::Identity() * 5.0), std::nullopt});
-  JointDefinition pin;
-  pin.name = "pin";
-  pin.kind = JointKind::revolute;
-  pin.axis = Vector3::UnitY();
-  pin.parent = ModelBuilder::ground_name;
-  pin.child = "beam";
-  builder.add_joint(pin);
-  JointDefinition stroke;
-  stroke.name = "stroke";
-  stroke.kind = JointKind::prismatic;
-  stroke.axis = Vector3::UnitZ();
-  stroke.parent = ModelBuilder::ground_name;
-  stroke.child = "slider";
-  stroke.X_parent_joint = Transform(Matrix3::Identity(), Vector3(a, 0.0, -d));
-  builder.add_joint(stroke);
+  builder.add_joint(joint("pin", JointKind::revolute, Vector3::UnitY(), ModelBuilder::ground_name, "beam"));
+  builder.add_joint(joint("stroke", JointKind::prismatic, Vector3::UnitZ(), ModelBuilder::ground_name, "slider",
+                          Vector3(a, 0.0, -d)));
   builder.add_distance_constraint({"rod", "slider", "beam", Vector3::Zero(), Vector3(a, 0.0, 0.0), d});
   const auto model = std::make_shared<const Model>(builder.build());
   Data data(*model);
@@ -111,12 +104,7 @@ TEST(StaticBalance, StrokeHeldByADriverIsRefused) {
   ModelBuilder builder;
   builder.set_gravity(Vector3(0.0, 0.0, -g));
   builder.add_body({"load", Inertia(load_mass, Vector3::Zero(), Matrix3::Identity() * 1e6), std::nullopt});
-  JointDefinition stroke;
-  stroke.name = "stroke";
-  stroke.kind = JointKind::prismatic;
-  stroke.parent = ModelBuilder::ground_name;
-  stroke.child = "load";
-  builder.add_joint(stroke);
+  builder.add_joint(joint("stroke", JointKind::prismatic, Vector3::UnitZ(), ModelBuilder::ground_name, "load"));
   DriverDefinition hold;
   hold.name = "hold";
   hold.joint = "stroke";
