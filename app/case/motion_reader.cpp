@@ -60,13 +60,15 @@ std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const st
     }
     return node->node().scalar;
   };
-  if (!item.has("position")) item["position"];  // required (or a table): reports the missing key
-  const std::string position = *expression("position");
+  // Required (or a table): a missing key, or one left empty (`position:` with nothing
+  // after it is YAML's null), is reported at that key.
+  const std::optional<std::string> position = expression("position");
+  if (!position) item["position"].fail(expression_expectation);
   const std::optional<std::string> velocity = expression("velocity"), acceleration = expression("acceleration");
   if (velocity.has_value() != acceleration.has_value())
     item[velocity ? "velocity" : "acceleration"].fail("only one of velocity and acceleration",
                                                       "both (the exact derivatives of position) or neither");
-  return std::make_shared<const TimeFunction>(name, position, velocity, acceleration, expressions.parameters());
+  return std::make_shared<const TimeFunction>(name, *position, velocity, acceleration, expressions.parameters());
 }
 
 std::shared_ptr<const TimeFunction> read_time_expression(const NodeReader& key, const std::string& name,
