@@ -95,17 +95,27 @@ Model loop_joint_chain(JointKind kind, int bodies) {
   return builder.build();
 }
 
-/// A random configuration (unit quaternions) and velocity of the chain.
-void random_state(const Model& model, VectorX& q, VectorX& v) {
-  std::mt19937_64 random(7);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  q = model.neutral_configuration();
-  for (int k = 0; k < model.nq; ++k) q[k] += 0.3 * uniform(random);
-  v = VectorX::NullaryExpr(model.nv, [&](Eigen::Index) { return uniform(random); });
-}
-
 constexpr JointKind loop_kinds[] = {JointKind::fixed, JointKind::revolute, JointKind::prismatic,
                                     JointKind::cylindrical, JointKind::universal, JointKind::spherical};
+
+/// A chain of `bodies` bodies tied by loop joints of the benchmark's kind (its range(0)),
+/// at a random configuration (unit quaternions) and velocity: position and velocity
+/// stages current, as the Jacobian and gamma read them.
+struct LoopChainAtRandomState {
+  static constexpr int bodies = 16;
+  explicit LoopChainAtRandomState(const benchmark::State& state)
+      : model(loop_joint_chain(loop_kinds[state.range(0)], bodies)), data(model) {
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    VectorX q = model.neutral_configuration();
+    for (int k = 0; k < model.nq; ++k) q[k] += 0.3 * uniform(random);
+    const VectorX v = VectorX::NullaryExpr(model.nv, [&](Eigen::Index) { return uniform(random); });
+    update_positions(model, data, q);
+    update_velocities(model, data, q, v);
+  }
+  Model model;
+  Data data;
+};
 
 /// The label and the time per loop joint of a chain of `bodies` (bodies - 1 loop joints).
 void report_per_loop_joint(benchmark::State& state, const Model& model, int bodies) {
@@ -117,35 +127,24 @@ void report_per_loop_joint(benchmark::State& state, const Model& model, int bodi
 }
 
 void jacobian_per_loop_joint(benchmark::State& state) {
-  constexpr int bodies = 16;
-  const Model model = loop_joint_chain(loop_kinds[state.range(0)], bodies);
-  Data data(model);
-  VectorX q, v;
-  random_state(model, q, v);
-  update_positions(model, data, q);
-  MatrixX J = MatrixX::Zero(model.num_constraint_rows, model.nv);
+  LoopChainAtRandomState chain(state);
+  MatrixX J = MatrixX::Zero(chain.model.num_constraint_rows, chain.model.nv);
   for (auto _ : state) {
-    constraint_jacobian(model, data, 0.0, J);
+    constraint_jacobian(chain.model, chain.data, 0.0, J);
     benchmark::ClobberMemory();
   }
-  report_per_loop_joint(state, model, bodies);
+  report_per_loop_joint(state, chain.model, chain.bodies);
 }
 BENCHMARK(jacobian_per_loop_joint)->DenseRange(0, 5);
 
 void gamma_per_loop_joint(benchmark::State& state) {
-  constexpr int bodies = 16;
-  const Model model = loop_joint_chain(loop_kinds[state.range(0)], bodies);
-  Data data(model);
-  VectorX q, v;
-  random_state(model, q, v);
-  update_positions(model, data, q);
-  update_velocities(model, data, q, v);
-  VectorX gamma = VectorX::Zero(model.num_constraint_rows);
+  LoopChainAtRandomState chain(state);
+  VectorX gamma = VectorX::Zero(chain.model.num_constraint_rows);
   for (auto _ : state) {
-    constraint_bias(model, data, 0.0, gamma);
+    constraint_bias(chain.model, chain.data, 0.0, gamma);
     benchmark::DoNotOptimize(gamma.data());
   }
-  report_per_loop_joint(state, model, bodies);
+  report_per_loop_joint(state, chain.model, chain.bodies);
 }
 BENCHMARK(gamma_per_loop_joint)->DenseRange(0, 5);
 
