@@ -9,10 +9,13 @@ packages=(
   libeigen3-dev libsundials-dev libsuitesparse-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev libssl-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)
-  python3-numpy python3-h5py python3-matplotlib
+  python3-numpy python3-scipy python3-h5py python3-matplotlib
+  libopenmpi-dev openmpi-bin   # heavesim sweep across MPI ranks (mpirun)
+  pybind11-dev python3-dev     # the heavesim Python package
+  chromium                     # the report's headless-browser test
 )
 if [[ "${1:-}" == "--peers" ]]; then
-  packages+=(libmujoco-dev libqhull-dev libdart-dev)
+  packages+=(libmujoco-dev libqhull-dev libdart-dev libbullet-dev libsiconos-numerics-dev)
 fi
 
 missing=()
