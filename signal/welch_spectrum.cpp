@@ -1,7 +1,6 @@
 #include "signal/welch_spectrum.hpp"
 
 #include <cmath>
-#include <numbers>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -20,21 +19,11 @@ double SpectralMoments::bandwidth() const {
 }
 
 WelchAccumulator::WelchAccumulator(int segment_length, double sampling_frequency)
-    : sampling_frequency_(sampling_frequency) {
-  if (segment_length < 4 || segment_length % 2 != 0)
-    throw std::invalid_argument(fmt::format("Welch segment length {}: expected an even number >= 4", segment_length));
+    : sampling_frequency_(sampling_frequency), segment_transform_(segment_length) {
   if (!(sampling_frequency > 0.0) || !std::isfinite(sampling_frequency))
     throw std::invalid_argument(fmt::format("sampling frequency {} Hz: expected > 0", sampling_frequency));
-  const int L = segment_length;
-  window_.resize(L);
-  for (int n = 0; n < L; ++n) {
-    window_[n] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * n / L));
-    window_power_ += window_[n] * window_[n];
-  }
-  buffer_.resize(L);
-  segment_.resize(L);
-  power_sum_.assign(L / 2 + 1, 0.0);
-  transform_.resize(L);
+  buffer_.resize(segment_length);
+  power_sum_.assign(segment_length / 2 + 1, 0.0);
 }
 
 void WelchAccumulator::add(double x) {
@@ -47,33 +36,21 @@ void WelchAccumulator::add(double x) {
 }
 
 void WelchAccumulator::add_segment() {
-  const std::size_t L = buffer_.size();
-  double mean = 0.0;
-  for (double v : buffer_) mean += v;
-  mean /= static_cast<double>(L);
-  for (std::size_t n = 0; n < L; ++n) segment_[n] = (buffer_[n] - mean) * window_[n];
-  // One transform object a thread: its plans (twiddle factors per length) are made once,
-  // not once per channel column.
-  thread_local Eigen::FFT<double> fft = [] {
-    Eigen::FFT<double> made;
-    made.SetFlag(Eigen::FFT<double>::HalfSpectrum);  // real input: bins 0 .. L/2 only
-    return made;
-  }();
-  fft.fwd(transform_, segment_);
-  for (std::size_t k = 0; k < power_sum_.size(); ++k) power_sum_[k] += std::norm(transform_[k]);
+  const std::vector<std::complex<double>>& transform = segment_transform_.transform(buffer_.data());
+  for (std::size_t k = 0; k < power_sum_.size(); ++k) power_sum_[k] += std::norm(transform[k]);
   ++segments_;
 }
 
 std::vector<double> WelchAccumulator::frequencies() const {
   std::vector<double> f(power_sum_.size());
-  for (std::size_t k = 0; k < f.size(); ++k) f[k] = sampling_frequency_ * static_cast<double>(k) / window_.size();
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = sampling_frequency_ * static_cast<double>(k) / buffer_.size();
   return f;
 }
 
 std::vector<double> WelchAccumulator::density() const {
   if (segments_ == 0) return {};
   std::vector<double> s(power_sum_.size());
-  const double scale = 1.0 / (sampling_frequency_ * window_power_ * static_cast<double>(segments_));
+  const double scale = 1.0 / (sampling_frequency_ * segment_transform_.window_power() * static_cast<double>(segments_));
   for (std::size_t k = 0; k < s.size(); ++k) {
     const bool edge = k == 0 || k + 1 == s.size();  // DC and Nyquist have no mirror bin
     s[k] = (edge ? 1.0 : 2.0) * power_sum_[k] * scale;

@@ -12,12 +12,11 @@
 // Streaming: a buffer of L samples; each time it fills, the segment's periodogram is
 // added and the buffer keeps its second half. Memory L + L/2 + 1 numbers, whatever the
 // record's length.
-#include <complex>
 #include <cstdint>
 #include <limits>
 #include <vector>
 
-#include <unsupported/Eigen/FFT>
+#include "signal/hann_segment.hpp"
 
 namespace heavesim::stats {
 
@@ -39,7 +38,7 @@ class WelchAccumulator {
   WelchAccumulator(int segment_length, double sampling_frequency);
   void add(double x);
   std::int64_t segments() const { return segments_; }
-  int segment_length() const { return static_cast<int>(window_.size()); }
+  int segment_length() const { return segment_transform_.length(); }
   /// f_k = k fs / L, k = 0 .. L/2 (Hz).
   std::vector<double> frequencies() const;
   /// S(f_k) (units^2/Hz); empty before the first whole segment.
@@ -49,9 +48,8 @@ class WelchAccumulator {
  private:
   void add_segment();
   double sampling_frequency_;
-  std::vector<double> window_, buffer_, segment_, power_sum_;
-  std::vector<std::complex<double>> transform_;
-  double window_power_ = 0.0;  // sum w_n^2
+  HannSegmentTransform segment_transform_;
+  std::vector<double> buffer_, power_sum_;
   int filled_ = 0;
   std::int64_t segments_ = 0;
 };

@@ -6,7 +6,8 @@
 //  * roll and pitch free decay: the period against the undamped eigenperiod of
 //    [C + K_moor - w^2 (M + A(w))] x = 0 with A(w) interpolated in the BEM data;
 //  * regular waves: the steady amplitudes and phases of all six motions (least-squares
-//    fit) against the frequency-domain RAO
+//    fit), and one 3-hour irregular sea by cross-spectral (H1) estimation, against the
+//    frequency-domain RAO
 //      X = [-w^2 (M + A(w)) + i w (B(w) + B_visc) + C + K_moor]^-1 F(w, beta).
 // C is semisub.hst as WAMIT wrote it (hydrostatic *and gravitational*, CG given): the
 // run takes the gravity part out and lets the kernel apply the weight at the CoM, so a
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <array>
 #include <complex>
 #include <cstdio>
 #include <fstream>
@@ -25,8 +27,11 @@
 #include <Eigen/LU>
 
 #include "app/run/simulation_run.hpp"
+#include "app/scene/hydro_scene.hpp"
 #include "app/scene/scene.hpp"
+#include "hydro/excitation/excitation_interpolation.hpp"
 #include "io/bem/wamit_reader.hpp"
+#include "signal/cross_spectrum.hpp"
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 
@@ -244,6 +249,84 @@ TEST(Platform6Dof, RegularWaveMotionsMatchTheFrequencyDomainRao) {
   }
   RecordProperty("amplitude_error", std::to_string(worst_amplitude));
   RecordProperty("phase_error_deg", std::to_string(worst_phase));
+}
+
+// The same RAO from one irregular run: cases/hydro/semisub_6dof_irregular_sea.yaml (JONSWAP
+// Hs = 4 m, Tp = 10 s, head seas, 3 hours, output every 0.5 s) with 1000 equal-energy
+// components instead of its 200. Input: the undisturbed elevation at the reference
+// point's mean position (the origin, to which the BEM excitation phases refer), from the
+// case's own wave train; outputs: surge, heave, pitch. H1 = G_xy / G_xx over 2048-sample
+// (1024 s) half-overlapping Hann segments from t = 200 s (ramp and start-up transients
+// gone): 19 segments, df = 0.98 mHz. Compared at every bin where the coherence exceeds 0.9,
+// the sea holds energy (G_xx >= 1 % of its peak) and the RAO matters (|X| >= 10 % of the
+// mode's largest over those bins, as the regular-wave test's rule), against
+// X(w) = Z(w)^-1 F(w, 180 deg) with A(w), B(w) and F linear in w between the BEM points.
+// Bars as the regular-wave test's, 3 % and 3 deg: beyond the run's radiation realisation
+// (about 1 % of w^2 A) come the estimator's random error, sqrt(1 - g^2) / (|g| sqrt(2 n_d))
+// (Bendat & Piersol 2010, Table 9.6; < 0.2 % at the coherences met here, > 0.999), and
+// the bin-to-component offset: a bin between two wave components reads the RAO where
+// they are, not where it is. With 200 components they are 2-4 mHz apart at 7 s, and on
+// the steep flank of the surge RAO (7.6 per Hz) that alone is 6 %; with 1000 they are
+// closer than the window's main lobe. Measured (2026-11-25): surge 2.9 % and 1.5 deg,
+// heave 1.4 % and 1.2 deg, pitch 2.8 % and 1.5 deg, at 74-106 bins each.
+TEST(Platform6Dof, IrregularSeaH1RaoMatchesTheFrequencyDomainRao) {
+  const hydro::BemData& bem = semisub();
+  const Matrix6 mass = frc_mass_matrix();
+  const std::string file = "cases/hydro/semisub_6dof_irregular_sea.yaml";
+  const std::vector<std::string> overrides = {"waves.components=1000"};
+  const CaseDefinition definition = load_case(testing::source_path(file), overrides);
+  const Matrix6 stiffness = bem.hydrostatic_stiffness + case_matrix(definition, "mooring");
+  const Matrix6 viscous = case_matrix(definition, "viscous");
+  const hydro::WaveTrain waves = wave_train(definition);
+  const Record record = run_case(file, overrides);
+  const double dt = record.time[1] - record.time[0], t_start = 200.0;
+  std::vector<double> elevation;
+  std::array<std::vector<double>, 6> motion;
+  for (std::size_t k = 0; k < record.time.size(); ++k) {
+    if (record.time[k] < t_start) continue;
+    elevation.push_back(waves.elevation(record.time[k], 0.0, 0.0));
+    for (int mode = 0; mode < 6; ++mode) motion[mode].push_back(record.xi[k][mode]);
+  }
+  const std::complex<double> i(0.0, 1.0);
+  const char* names[6] = {"surge", "sway", "heave", "roll", "pitch", "yaw"};
+  for (int mode : {0, 2, 4}) {
+    const stats::CrossSpectralEstimate e = stats::cross_spectral_density(elevation, motion[mode], 2048, 1.0 / dt);
+    const double peak_input = *std::max_element(e.input_density.begin(), e.input_density.end());
+    struct Bin {
+      double period;
+      std::complex<double> estimate, rao;
+    };
+    std::vector<Bin> bins;
+    double largest = 0.0;
+    for (std::size_t k = 1; k < e.frequencies.size(); ++k) {
+      if (!(e.coherence(k) > 0.9) || e.input_density[k] < 0.01 * peak_input) continue;
+      const double w = 2 * M_PI * e.frequencies[k];
+      const auto [added_mass, damping] = radiation_at(w);
+      const ComplexMatrix6 impedance = (-w * w * (mass + added_mass) + stiffness).cast<std::complex<double>>() +
+                                       i * w * (damping + viscous).cast<std::complex<double>>();
+      const hydro::ComplexVector6 rao =
+          impedance.partialPivLu().solve(hydro::interpolate_excitation(bem.excitation, w, M_PI));
+      bins.push_back({1.0 / e.frequencies[k], e.transfer_function(k), rao[mode]});
+      largest = std::max(largest, std::abs(rao[mode]));
+    }
+    double worst_amplitude = 0.0, worst_phase = 0.0;
+    int compared = 0;
+    for (const Bin& bin : bins) {
+      if (std::abs(bin.rao) < 0.1 * largest) continue;
+      const double amplitude_error = std::abs(std::abs(bin.estimate) / std::abs(bin.rao) - 1.0);
+      const double phase_error = std::abs(std::arg(bin.estimate / bin.rao)) * 180 / M_PI;
+      EXPECT_LT(amplitude_error, 0.03) << names[mode] << " at T = " << bin.period << " s";
+      EXPECT_LT(phase_error, 3.0) << names[mode] << " at T = " << bin.period << " s";
+      worst_amplitude = std::max(worst_amplitude, amplitude_error);
+      worst_phase = std::max(worst_phase, phase_error);
+      ++compared;
+    }
+    std::printf("%s: H1 vs frequency-domain RAO at %d bins: worst amplitude %.2f %%, phase %.2f deg\n", names[mode],
+                compared, 100 * worst_amplitude, worst_phase);
+    EXPECT_GE(compared, 50) << names[mode];  // the comparison covers the sea's band, not a few bins
+    RecordProperty(std::string(names[mode]) + "_amplitude_error", std::to_string(worst_amplitude));
+    RecordProperty(std::string(names[mode]) + "_phase_error_deg", std::to_string(worst_phase));
+  }
 }
 
 }  // namespace
