@@ -67,7 +67,7 @@ struct ComplementarityResult {
   /// residual_absolute / |q|_inf (|q|_inf = 0: / 1), Siconos' and FCLIB's scaling.
   double residual = 0.0;
   int attempts = 1;     ///< fallback chain: solvers tried, the successful one included
-  std::string message;  ///< empty when solved; otherwise names the row, entry or condition
+  std::string message;  ///< failures: names the row, entry or condition; solved by a fallback chain: the solvers that failed first; else empty
   bool solved() const { return status == ComplementarityStatus::solved; }
 };
 
