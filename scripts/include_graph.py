@@ -35,6 +35,7 @@ KERNEL_LAYERS = [
     ("kernel/.",),  # files directly in kernel/ (parameter_error.hpp): the vocabulary every layer uses
     ("kernel/spatial",),
     ("kernel/math",),
+    ("kernel/complementarity",),
     ("kernel/joints",),
     ("kernel/model",),
     ("kernel/algorithms",),

@@ -12,6 +12,8 @@
 #include "control/active/active_compensator.hpp"
 #include "control/pneumatic/pneumatic_compensator.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/complementarity/fallback_chain.hpp"
+#include "kernel/complementarity/gauss_seidel.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
@@ -23,6 +25,7 @@
 #include "kernel/system/ggl_dae_form.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "kernel/system/ode_form.hpp"
+#include "samples/complementarity_problems.hpp"
 #include "samples/floating_bodies.hpp"
 #include "samples/loop_mechanisms.hpp"
 #include "samples/random_models.hpp"
@@ -322,6 +325,38 @@ TEST(NoMalloc, CompensatorsDoNotAllocate) {
       element.outputs(0.0, system->model(), system->data(), y.segment(system->state_offset(e), element.state_size()),
                       values[e]);
     }
+  });
+}
+
+TEST(NoMalloc, ComplementaritySolversDoNotAllocate) {
+  // Workspaces larger than the problem (a contact count that varies from step to step),
+  // a plain LCP, a boxed one and one with friction rows; every solver and the chain.
+  const int n = 12;
+  const samples::LcpSample sample = samples::random_spd_lcp(n, 3);
+  const VectorX lo = -VectorX::Constant(n, 0.3), hi = VectorX::Constant(n, 0.4);
+  Eigen::VectorXi normal = Eigen::VectorXi::Constant(n, -1);
+  normal[1] = normal[2] = 0;
+  const VectorX mu = VectorX::Constant(n, 0.5);
+  const ComplementarityProblem plain{sample.M, sample.q};
+  const ComplementarityProblem boxed{sample.M, sample.q, &lo, &hi};
+  const ComplementarityProblem friction{sample.M, sample.q, nullptr, nullptr, &normal, &mu};
+  ComplementarityWorkspace workspace(n + 5);
+  GaussSeidelWorkspace linear(n);
+  std::vector<LemkePivot> pivots;
+  pivots.reserve(4 * n);
+  LemkeOptions lemke_options;
+  lemke_options.pivot_log = &pivots;
+  VectorX z(n), x(n);
+  ForbidAllocation forbid;
+  EXPECT_NO_THROW({
+    EXPECT_TRUE(lemke(plain, workspace.lemke, z, lemke_options).solved());
+    EXPECT_TRUE(lemke(boxed, workspace.lemke, z).solved());
+    EXPECT_TRUE(dantzig(plain, workspace.dantzig, z).solved());
+    EXPECT_TRUE(dantzig(boxed, workspace.dantzig, z).solved());
+    dantzig(friction, workspace.dantzig, z);
+    EXPECT_TRUE(projected_gauss_seidel(friction, workspace.projected_gauss_seidel, z).solved());
+    EXPECT_TRUE(solve_complementarity(boxed, workspace, z).solved());
+    EXPECT_TRUE(gauss_seidel(sample.M, sample.q, linear, x).solved());
   });
 }
 

@@ -67,6 +67,11 @@ const std::vector<ValidationCheck>& validation_checks() {
       {"S1", "static equilibrium of a spring-loaded crane vs the hand moment and force balance", check_s1_spring_crane},
       {"S2", "static equilibrium of the drilling rig: heave offset, stroke, gas pressure, hook loads vs hand formulas",
        check_s2_rig_statics},
+      {"P1", "LCP textbook problems: the source document's Lemke tableau example (pivot sequence, answer) and "
+             "Murty's problem (2^n pivots)",
+       check_p1_lcp_textbook},
+      {"P2", "random SPD and P-matrix LCPs (n = 10..500, answer chosen first): Lemke and Dantzig residuals",
+       check_p2_lcp_random},
   };
   return checks;
 }

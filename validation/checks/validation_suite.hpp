@@ -88,6 +88,8 @@ std::vector<ValidationRow> check_l7_redundant_four_bar();
 std::vector<ValidationRow> check_l8_driving_torque();
 std::vector<ValidationRow> check_s1_spring_crane();
 std::vector<ValidationRow> check_s2_rig_statics();
+std::vector<ValidationRow> check_p1_lcp_textbook();
+std::vector<ValidationRow> check_p2_lcp_random();
 std::vector<ValidationRow> check_m1_mksim_import();
 
 }  // namespace heavesim::validation

@@ -1,0 +1,218 @@
+#include "kernel/complementarity/dantzig.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace heavesim {
+
+DantzigWorkspace::DantzigWorkspace(int size)
+    : capacity(size),
+      cholesky(size, size),
+      w(size),
+      lower(size),
+      upper(size),
+      direction_z(size),
+      direction_w(size),
+      gathered(size),
+      state(size),
+      order(size) {
+  clamped.reserve(size);
+}
+
+namespace {
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+enum : signed char { undriven = 0, in_clamped = 1, at_lower = 2, at_upper = 3 };
+
+// Appends row j to C: the new row of L is [y^T, sqrt(M_jj - y^T y)] with L y = M_Cj.
+// False if that pivot is not positive (M_CC + j singular or indefinite).
+bool append_clamped(const MatrixX& M, DantzigWorkspace& ws, int j, double tolerance) {
+  const int c = static_cast<int>(ws.clamped.size());
+  auto y = ws.gathered.head(c);
+  for (int k = 0; k < c; ++k) y[k] = M(ws.clamped[k], j);
+  ws.cholesky.topLeftCorner(c, c).triangularView<Eigen::Lower>().solveInPlace(y);
+  const double pivot = M(j, j) - y.squaredNorm();
+  if (!(pivot > tolerance * std::abs(M(j, j)))) return false;
+  ws.cholesky.row(c).head(c) = y.transpose();
+  ws.cholesky(c, c) = std::sqrt(pivot);
+  ws.clamped.push_back(j);  // within the reserved capacity
+  return true;
+}
+
+// Removes position p of C. With L = [L11 0 0; l21 l22 0; L31 l32 L33], the factor of
+// M_CC without row/column p is [L11 0; L31 L33'] with L33' L33'^T = L33 L33^T + l32 l32^T:
+// a rank-one Cholesky update by Givens-like steps (Gill, Golub, Murray & Saunders 1974).
+void remove_clamped(DantzigWorkspace& ws, int p) {
+  const int c = static_cast<int>(ws.clamped.size());
+  MatrixX& L = ws.cholesky;
+  VectorX& x = ws.gathered;
+  for (int i = p + 1; i < c; ++i) x[i] = L(i, p);
+  for (int k = p + 1; k < c; ++k) {
+    const double r = std::hypot(L(k, k), x[k]);
+    const double cosine = r / L(k, k), sine = x[k] / L(k, k);
+    L(k, k) = r;
+    for (int i = k + 1; i < c; ++i) {
+      L(i, k) = (L(i, k) + sine * x[i]) / cosine;
+      x[i] = cosine * x[i] - sine * L(i, k);
+    }
+  }
+  for (int i = p + 1; i < c; ++i) {
+    for (int col = 0; col < p; ++col) L(i - 1, col) = L(i, col);
+    for (int col = p + 1; col <= i; ++col) L(i - 1, col - 1) = L(i, col);
+  }
+  ws.clamped.erase(ws.clamped.begin() + p);
+}
+
+}  // namespace
+
+ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWorkspace& ws, VectorX& z,
+                              const DantzigOptions& options) {
+  ComplementarityResult result = validate(problem);
+  result.solver = ComplementaritySolver::dantzig;
+  if (!result.solved()) return result;
+  const MatrixX& M = problem.M;
+  const int n = problem.size();
+  if (n > ws.capacity || z.size() != n) {
+    result.status = ComplementarityStatus::invalid_input;
+    result.message = "Dantzig workspace holds " + std::to_string(ws.capacity) + " rows and z has " +
+                     std::to_string(z.size()) + " entries; the problem has " + std::to_string(n);
+    return result;
+  }
+  const double matrix_scale = n ? M.lpNorm<Eigen::Infinity>() : 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = j + 1; i < n; ++i)
+      if (std::abs(M(i, j) - M(j, i)) > 1e-12 * matrix_scale) {
+        result.status = ComplementarityStatus::unsupported;
+        result.message = "Dantzig needs a symmetric M; M(" + std::to_string(i) + ", " + std::to_string(j) +
+                         ") differs from M(" + std::to_string(j) + ", " + std::to_string(i) + ")";
+        return result;
+      }
+  z.setZero();
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    ws.state[i] = undriven;
+    if (problem.is_friction_row(i)) continue;
+    ws.order[count++] = i;
+    ws.lower[i] = problem.lower_bound(i, z);
+    ws.upper[i] = problem.upper_bound(i, z);
+    if (ws.lower[i] > 0.0 || ws.upper[i] < 0.0) {
+      result.status = ComplementarityStatus::unsupported;
+      result.message = "Dantzig starts from z = 0, which row " + std::to_string(i) + "'s box excludes";
+      return result;
+    }
+  }
+  for (int i = 0; i < n; ++i)
+    if (problem.is_friction_row(i)) ws.order[count++] = i;
+  ws.clamped.clear();
+  ws.w.head(n) = problem.q;
+  const double q_scale = n ? problem.q.lpNorm<Eigen::Infinity>() : 0.0;
+  const double zero_w = 1e-14 * (q_scale > 0.0 ? q_scale : 1.0);
+  result.pivot_limit = options.max_pivots > 0 ? options.max_pivots : 20 * std::max(n, 1);
+
+  auto singular = [&](int row) {
+    result.status = ComplementarityStatus::singular_pivot;
+    result.message = "Dantzig: pivot of row " + std::to_string(row) +
+                     " is not positive (the clamped rows' block of M is singular: redundant or "
+                     "duplicate constraints; regularise the diagonal or use another solver)";
+    evaluate_residual(problem, z, ws.direction_w.head(n), result);
+    return result;
+  };
+
+  for (int position = 0; position < n; ++position) {
+    const int i = ws.order[position];
+    if (problem.is_friction_row(i)) {
+      ws.upper[i] = problem.upper_bound(i, z);
+      ws.lower[i] = -ws.upper[i];
+    }
+    while (true) {
+      if (result.pivots >= result.pivot_limit) {
+        result.status = ComplementarityStatus::iteration_limit;
+        result.message = "Dantzig stopped after " + std::to_string(result.pivots) + " set changes (the cap)";
+        evaluate_residual(problem, z, ws.direction_w.head(n), result);
+        return result;
+      }
+      const double w_i = ws.w[i];
+      if (std::abs(w_i) <= zero_w) {
+        if (z[i] <= ws.lower[i]) ws.state[i] = at_lower;
+        else if (z[i] >= ws.upper[i]) ws.state[i] = at_upper;
+        else if (!append_clamped(M, ws, i, options.pivot_tolerance)) return singular(i);
+        else ws.state[i] = in_clamped;
+        break;
+      }
+      if (w_i > 0.0 && z[i] <= ws.lower[i]) { ws.state[i] = at_lower; break; }
+      if (w_i < 0.0 && z[i] >= ws.upper[i]) { ws.state[i] = at_upper; break; }
+      const double s = w_i < 0.0 ? 1.0 : -1.0;
+      // dz_C = -s M_CC^-1 M_Ci keeps w_C = 0; dw = M_:C dz_C + s M_:i.
+      const int c = static_cast<int>(ws.clamped.size());
+      auto v = ws.gathered.head(c);
+      for (int k = 0; k < c; ++k) v[k] = M(ws.clamped[k], i);
+      const auto L = ws.cholesky.topLeftCorner(c, c).triangularView<Eigen::Lower>();
+      L.solveInPlace(v);
+      L.transpose().solveInPlace(v);
+      auto direction_w = ws.direction_w.head(n);
+      direction_w = s * M.col(i);
+      for (int k = 0; k < c; ++k) {
+        ws.direction_z[ws.clamped[k]] = -s * v[k];
+        direction_w += (-s * v[k]) * M.col(ws.clamped[k]);
+      }
+      const double dw_i = ws.direction_w[i];
+      if (!(s * dw_i > options.pivot_tolerance * std::abs(M(i, i)))) return singular(i);
+      // The longest step before a set changes.
+      double step = -w_i / dw_i;
+      int limiting = i;
+      bool limit_is_bound = false;
+      const double own_room = s > 0.0 ? ws.upper[i] - z[i] : z[i] - ws.lower[i];
+      if (own_room < step) step = own_room, limit_is_bound = true;
+      for (int k = 0; k < c; ++k) {
+        const int j = ws.clamped[k];
+        const double dz = ws.direction_z[j];
+        const double room = dz > 0.0 ? (ws.upper[j] - z[j]) / dz : dz < 0.0 ? (ws.lower[j] - z[j]) / dz : infinity;
+        if (room < step) step = room, limiting = j, limit_is_bound = true;
+      }
+      for (int j = 0; j < n; ++j) {
+        const double dw = ws.direction_w[j];
+        if ((ws.state[j] == at_lower && dw < 0.0) || (ws.state[j] == at_upper && dw > 0.0)) {
+          const double room = -ws.w[j] / dw;
+          if (room < step) step = room, limiting = j, limit_is_bound = false;
+        }
+      }
+      step = std::max(step, 0.0);
+      z[i] += s * step;
+      for (int k = 0; k < c; ++k) z[ws.clamped[k]] += step * ws.direction_z[ws.clamped[k]];
+      ws.w.head(n) += step * direction_w;
+      for (int k = 0; k < c; ++k) ws.w[ws.clamped[k]] = 0.0;
+      ++result.pivots;
+      if (limiting == i) {
+        if (limit_is_bound) {
+          z[i] = s > 0.0 ? ws.upper[i] : ws.lower[i];
+          ws.state[i] = s > 0.0 ? at_upper : at_lower;
+        } else {
+          ws.w[i] = 0.0;
+          if (!append_clamped(M, ws, i, options.pivot_tolerance)) return singular(i);
+          ws.state[i] = in_clamped;
+        }
+        break;
+      }
+      if (limit_is_bound) {  // a clamped row reached a bound: it leaves C
+        const int k = static_cast<int>(std::find(ws.clamped.begin(), ws.clamped.end(), limiting) - ws.clamped.begin());
+        z[limiting] = ws.direction_z[limiting] > 0.0 ? ws.upper[limiting] : ws.lower[limiting];
+        ws.state[limiting] = ws.direction_z[limiting] > 0.0 ? at_upper : at_lower;
+        remove_clamped(ws, k);
+      } else {  // a row at a bound reached w = 0: it joins C
+        ws.w[limiting] = 0.0;
+        if (!append_clamped(M, ws, limiting, options.pivot_tolerance)) return singular(limiting);
+        ws.state[limiting] = in_clamped;
+      }
+    }
+  }
+  evaluate_residual(problem, z, ws.direction_w.head(n), result);
+  result.status = result.residual <= options.tolerance ? ComplementarityStatus::solved
+                                                       : ComplementarityStatus::not_converged;
+  if (!result.solved())
+    result.message = "Dantzig ended with relative residual " + std::to_string(result.residual) +
+                     (problem.has_friction() ? " (friction boxes frozen before the normal values settled)" : "");
+  return result;
+}
+
+}  // namespace heavesim

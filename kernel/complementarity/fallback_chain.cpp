@@ -1,0 +1,31 @@
+#include "kernel/complementarity/fallback_chain.hpp"
+
+namespace heavesim {
+
+ComplementarityResult solve_complementarity(const ComplementarityProblem& problem, ComplementarityWorkspace& ws,
+                                            VectorX& z, const FallbackChainOptions& options) {
+  ComplementarityResult result = validate(problem);
+  if (!result.solved()) return result;
+  std::string failures;
+  for (int k = 0; k < options.count; ++k) {
+    switch (options.order[k]) {
+      case ComplementaritySolver::lemke: result = lemke(problem, ws.lemke, z, options.lemke); break;
+      case ComplementaritySolver::dantzig: result = dantzig(problem, ws.dantzig, z, options.dantzig); break;
+      case ComplementaritySolver::projected_gauss_seidel:
+      case ComplementaritySolver::gauss_seidel:
+        result = projected_gauss_seidel(problem, ws.projected_gauss_seidel, z, options.projected_gauss_seidel);
+        break;
+    }
+    result.attempts = k + 1;
+    if (result.solved() || result.status == ComplementarityStatus::invalid_input) {
+      if (!failures.empty()) result.message = "after " + failures;  // which solvers failed before
+      return result;
+    }
+    failures += std::string(failures.empty() ? "" : "; ") + to_string(result.solver) + ": " +
+                to_string(result.status);
+  }
+  result.message = "no solver of the chain solved the problem (" + failures + "); last: " + result.message;
+  return result;
+}
+
+}  // namespace heavesim
