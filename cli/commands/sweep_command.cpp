@@ -103,7 +103,7 @@ class SweepProgress {
 
 /// Checks `run`'s case as `heavesim check` would (load, build the scene); "" when good,
 /// else the message, placed in the sweep file where the offending value is written.
-std::string check_run(const SweepDefinition& sweep, const SweepPlan& plan, const PlannedRun& run) {
+std::string check_run(const SweepPlan& plan, const PlannedRun& run) {
   try {
     const CaseDefinition definition = load_case(run.base_case, run.overrides());
     build_scene(definition);
@@ -187,7 +187,7 @@ int sweep_command(const SweepOptions& options) {
 
   // 1. Every resolved case checked before the first run: bad input is exit 2 up front.
   TaskCallbacks check;
-  check.run = [&](int index, int) { return check_run(sweep, plan, plan.runs[static_cast<std::size_t>(index)]); };
+  check.run = [&](int index, int) { return check_run(plan, plan.runs[static_cast<std::size_t>(index)]); };
   check.crashed = [](int, int, int signal) { return fmt::format("crashed with signal {} while checking", signal); };
   check.finished = [](int, const std::string&) {};
   check.stop_requested = stop_requested;
