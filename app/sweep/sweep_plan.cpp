@@ -79,13 +79,15 @@ std::string run_hash(const std::string& resolved_yaml, const std::string& versio
 std::string run_hash(const std::string& resolved_yaml) { return run_hash(resolved_yaml, heavesim_version); }
 
 InputError error_in_sweep(const PlannedRun& run, const std::vector<std::string>& columns, const InputError& error) {
-  // apply_override names an override "--set <assignment>" (cut after 120 characters).
+  // apply_override names an override "--set <assignment>" (cut after 120 characters),
+  // and the value it parsed "--set <path>"; a later assignment of a path overrides an
+  // earlier one, so the last that matches is the one the case holds.
   const std::string& origin = error.location().file;
-  for (const SweepAssignment& assignment : run.assignments) {
-    const std::string text = assignment.path + "=" + assignment.value;
+  for (auto assignment = run.assignments.rbegin(); assignment != run.assignments.rend(); ++assignment) {
+    const std::string text = assignment->path + "=" + assignment->value;
     const std::string shown = text.size() > 120 ? text.substr(0, 120) + "..." : text;
-    if (origin == "--set " + shown)
-      return InputError(assignment.location, error.key_path(),
+    if (origin == "--set " + shown || origin == "--set " + assignment->path)
+      return InputError(assignment->location, error.key_path(),
                         fmt::format("{} (run {}: {}; {})", error.found(), run.index, run.name, run.describe(columns)),
                         error.expected());
   }

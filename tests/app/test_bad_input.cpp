@@ -60,8 +60,9 @@ TEST(BadInput, EveryCaseIsRejectedWithFileLineKeyPathAndExpectation) {
         bad.command == "sweep" ? " sweep " + bad.path + " -o " + ::testing::TempDir() + "bad_sweep" : " check " + bad.path;
     const testing::CommandResult result = testing::run_command_line("timeout 10 " + testing::heavesim_binary() + arguments);
     EXPECT_EQ(result.exit_code, 2) << "(124 means it hung) " << result.output;
-    if (bad.command == "sweep")
+    if (bad.command == "sweep") {
       EXPECT_FALSE(std::filesystem::exists(::testing::TempDir() + "bad_sweep/index.h5")) << "a run started";
+    }
     const std::string position = bad.error_file + ":" + std::to_string(bad.line) + ":";
     EXPECT_NE(result.output.find(position), std::string::npos) << "no '" << position << "' in: " << result.output;
     if (!bad.key_path.empty()) {
