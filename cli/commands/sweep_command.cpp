@@ -230,7 +230,7 @@ int sweep_command(const SweepOptions& options) {
   if (!coordinator) return 0;
 
   std::vector<RunRecord> records;
-  int complete = 0, reused = 0, pending = 0;
+  int complete = 0, reused = 0, pending = 0, stopped = 0;
   for (int i = 0; i < count; ++i) {
     RunRecord record;
     if (results[static_cast<std::size_t>(i)]) {
@@ -242,13 +242,15 @@ int sweep_command(const SweepOptions& options) {
     complete += record.status == run_status::complete;
     reused += record.reused;
     pending += record.status == run_status::pending;
+    stopped += record.status == run_status::stopped;
     records.push_back(std::move(record));
   }
   write_sweep_index(directory, sweep, plan, records);
   if (!options.quiet) {
-    fmt::print("sweep {}: {} runs on {} {}: {} complete ({} already complete, not rerun), {} failed{}; index {}/index.h5\n",
+    fmt::print("sweep {}: {} runs on {} {}: {} complete ({} already complete, not rerun), {} failed{}{}; index {}/index.h5\n",
                options.sweep_path, count, distribution->size(), started_by_mpirun() ? "MPI ranks" : "workers", complete,
-               reused, count - complete - pending, pending ? fmt::format(", {} not run", pending) : "", directory);
+               reused, count - complete - pending - stopped, stopped ? fmt::format(", {} stopped", stopped) : "",
+               pending ? fmt::format(", {} not run", pending) : "", directory);
     for (int i = 0; i < count; ++i)
       if (records[static_cast<std::size_t>(i)].status != run_status::complete &&
           records[static_cast<std::size_t>(i)].status != run_status::pending)
