@@ -12,7 +12,6 @@ packages=(
   python3-numpy python3-scipy python3-h5py python3-matplotlib
   libopenmpi-dev openmpi-bin   # heavesim sweep across MPI ranks (mpirun)
   pybind11-dev python3-dev     # the heavesim Python package
-  chromium                     # the report's headless-browser test
 )
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(libmujoco-dev libqhull-dev libdart-dev libbullet-dev libsiconos-numerics-dev)
