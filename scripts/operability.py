@@ -261,6 +261,8 @@ class Index:
             raise InputError(criteria_path, *mark(node), key_path, f"'{column}', not a dataset of {self.path}{hint}",
                              f"an index column under summary/ or statistics/ ({listed})")
         dataset = self.file[column]
+        if component is None and dataset.ndim == 2 and dataset.shape[1] == 1:
+            component = 0  # a one-column channel needs no component
         rows_ok = dataset.dtype.kind in "fiu" and dataset.shape[:1] == (self.count,)
         if not rows_ok or dataset.ndim > 2 or (dataset.ndim == 2 and component is None):
             raise InputError(criteria_path, *mark(node), key_path, f"'{column}' of type {dataset.dtype}{list(dataset.shape)}",
@@ -272,7 +274,9 @@ class Index:
 
     def values(self, criterion):
         data = np.asarray(self.file[criterion.column][()], dtype=float)
-        return data[:, criterion.component] if criterion.component is not None else data
+        if data.ndim == 2:
+            return data[:, criterion.component or 0]
+        return data
 
 
 # ---------------------------------------------------------------- evaluation
@@ -390,7 +394,9 @@ def plot(path, criteria, runs, variants, summary):
             alpha = 0.3 if run["operable"] else 0.95
             axis.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1, 1, facecolor=colour[run["limiting"]], alpha=alpha,
                                          edgecolor="white", linewidth=1.5))
-            axis.text(j, i + 0.12, f"{100 * run['probability'] / total:.2f}%", ha="center", va="center", fontsize=7.5)
+            share = 100 * run["probability"] / total
+            share_text = "0" if share == 0 else ("<0.01%" if share < 0.01 else f"{share:.2f}%")
+            axis.text(j, i + 0.12, share_text, ha="center", va="center", fontsize=7.5)
             axis.text(j, i - 0.2, "ok" if run["operable"] else "x", ha="center", va="center", fontsize=8,
                       fontweight="bold", color="black" if run["operable"] else "white")
         axis.set_xlim(-0.5, len(tp) - 0.5)
