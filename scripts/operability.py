@@ -82,13 +82,13 @@ class Criterion:
             margins.append((value - self.at_least) / self.scale)
         return min(margins)
 
-    def describe(self):
+    def limits(self):
         limits = []
         if self.at_least is not None:
-            limits.append(f">= {self.at_least:g}")
+            limits.append(f"≥ {self.at_least:g}")
         if self.at_most is not None:
-            limits.append(f"<= {self.at_most:g}")
-        return f"{self.column} " + " and ".join(limits)
+            limits.append(f"≤ {self.at_most:g}")
+        return ", ".join(limits)
 
 
 def mark(node):
@@ -407,9 +407,10 @@ def plot(path, criteria, runs, variants, summary):
         axis.set_ylabel("Hs [m]")
         percent = entry["operability_percent"]
         axis.set_title(f"{label}\noperable {percent:.1f} % of the time" if percent is not None else label, fontsize=10)
-    handles = [Patch(facecolor=colour[name], label=name) for name in names + failures]
+    handles = [Patch(facecolor=colour[c.name], label=f"{c.name} ({c.limits()})") for c in criteria]
+    handles += [Patch(facecolor=colour[status], label=f"run {status}") for status in failures]
     handles.append(Patch(facecolor="white", edgecolor="grey", label="pale: operable, tint = least margin"))
-    figure.legend(handles=handles, loc="lower center", ncol=min(len(handles), 4), fontsize=8, frameon=False)
+    figure.legend(handles=handles, loc="lower center", ncol=min(len(handles), 3), fontsize=8, frameon=False)
     figure.suptitle("Operability over the scatter diagram: cells coloured by the limiting criterion, occurrence in each cell",
                     fontsize=10)
     figure.tight_layout(rect=(0, 0.1, 1, 0.95))
