@@ -16,7 +16,8 @@ at_least, divided by `scale`, by default |limit|, or 1 for a limit of 0), operab
 margin is negative and the run completed; the limiting criterion is the first violated
 one in the file's order, else the one with the least margin; a run that did not complete
 is not operable and its status is the limiting criterion. Per design variant (each
-combination of the variables other than Hs and Tp): the operability, the occurrence
+combination of the variables other than Hs and Tp, and the base case when the sweep has
+several): the operability, the occurrence
 probability of the operable sea states over that of all of the variant's sea states.
 
 Writes DIR/operability.csv (one row per run), DIR/operability.json (the summary and every
@@ -234,6 +235,10 @@ class Index:
             if name not in SEA_STATE_VARIABLES and isinstance(dataset, h5py.Dataset):
                 values = text_values(dataset) if dataset.dtype.kind in "SOU" else list(self.numbers(f"variables/{name}"))
                 self.design[name] = values
+        if "runs/base_case" in self.file:  # a sweep over a list of base cases: each case is a design
+            cases = self.texts("runs/base_case")
+            if len(set(cases)) > 1:
+                self.design["case"] = [os.path.splitext(os.path.basename(case))[0] for case in cases]
         self.columns = []
         self.file.visititems(lambda name, item: self.columns.append(name)
                              if isinstance(item, h5py.Dataset) and name.split("/")[0] in ("summary", "statistics") else None)

@@ -76,13 +76,17 @@ criteria:
 """
 
 
-def write_index(path, runs=RUNS):
+def write_index(path, runs=RUNS, variant_by_base_case=False):
     keys = sorted(runs)
     count = len(keys)
     with h5py.File(path, "w") as f:
         f.attrs["run_count"] = count
         f.attrs["complete"] = 1
-        f.create_dataset("variables/active", data=np.array([k[0] for k in keys], dtype=float)).attrs["path"] = "parameters.active"
+        if variant_by_base_case:  # the variants are two base cases (docs/sweeps.md: `base` as a list)
+            cases = ["../c4_irregular_waves/h0_passive.yaml", "../c4_irregular_waves/h0_active.yaml"]
+            f.create_dataset("runs/base_case", data=[cases[k[0]] for k in keys], dtype=h5py.string_dtype())
+        else:
+            f.create_dataset("variables/parameters.active", data=np.array([k[0] for k in keys], dtype=float)).attrs["path"] = "parameters.active"
         f.create_dataset("variables/Hs", data=np.array([k[1] for k in keys]))
         f.create_dataset("variables/Tp", data=np.array([k[2] for k in keys]))
         # Normalised per variant: each variant's sea states sum to 1.
@@ -126,7 +130,7 @@ class OperabilityOnAHandMadeIndex(unittest.TestCase):
         summary = json.loads(self.result.stdout)
         cells = {}
         for variant in summary["variants"]:
-            active = int(variant["variables"]["active"])
+            active = int(variant["variables"]["parameters.active"])
             for cell in variant["cells"]:
                 cells[(active, cell["Hs"], cell["Tp"])] = (cell["operable"], cell["limiting"])
         self.assertEqual(cells, EXPECTED)
@@ -135,25 +139,25 @@ class OperabilityOnAHandMadeIndex(unittest.TestCase):
         summary = json.loads(self.result.stdout)
         total = sum(OCCURRENCE.values())
         for variant in summary["variants"]:
-            active = int(variant["variables"]["active"])
+            active = int(variant["variables"]["parameters.active"])
             operable = sum(OCCURRENCE[(hs, tp)] for (a, hs, tp), (ok, _) in EXPECTED.items() if a == active and ok)
             # Round-off: sums of six probabilities of order 0.1, so 1e-12 of 100 %.
             self.assertAlmostEqual(variant["operability_percent"], 100.0 * operable / total, delta=1e-12)
         # The figures themselves, by hand: passive 300/1000 = 30 %, active 850/1000 = 85 %.
-        by_active = {int(v["variables"]["active"]): v["operability_percent"] for v in summary["variants"]}
+        by_active = {int(v["variables"]["parameters.active"]): v["operability_percent"] for v in summary["variants"]}
         self.assertAlmostEqual(by_active[0], 30.0, delta=1e-12)
         self.assertAlmostEqual(by_active[1], 85.0, delta=1e-12)
 
     def test_failed_run_is_counted_not_operable_with_its_status(self):
         summary = json.loads(self.result.stdout)
-        passive = next(v for v in summary["variants"] if v["variables"]["active"] == 0)
+        passive = next(v for v in summary["variants"] if v["variables"]["parameters.active"] == 0)
         self.assertEqual(passive["failed_runs"], 1)
         failed = next(c for c in passive["cells"] if c["status"] != "complete")
         self.assertEqual((failed["Hs"], failed["Tp"], failed["operable"], failed["limiting"]), (5.0, 12.0, False, "numerical_failure"))
 
     def test_margins_are_fractions_of_the_limit(self):
         summary = json.loads(self.result.stdout)
-        active = next(v for v in summary["variants"] if v["variables"]["active"] == 1)
+        active = next(v for v in summary["variants"] if v["variables"]["parameters.active"] == 1)
         cell = next(c for c in active["cells"] if (c["Hs"], c["Tp"]) == (3.0, 12.0))
         self.assertAlmostEqual(cell["margins"]["hook load MPM"], (2.5e6 - 2.45e6) / 2.5e6, delta=1e-15)
         self.assertAlmostEqual(cell["margins"]["efficiency"], (0.96 - 0.9) / 0.9, delta=1e-15)
@@ -173,6 +177,24 @@ class OperabilityOnAHandMadeIndex(unittest.TestCase):
             header = f.read(8)
         self.assertEqual(header, b"\x89PNG\r\n\x1a\n")
         self.assertGreater(os.path.getsize(path), 10000)  # a figure, not an empty canvas
+
+
+class VariantsByBaseCase(unittest.TestCase):
+    """A sweep over a list of base cases: each case is a variant, named by its file."""
+
+    def test_each_base_case_is_a_variant(self):
+        with tempfile.TemporaryDirectory() as directory:
+            index = os.path.join(directory, "index.h5")
+            write_index(index, variant_by_base_case=True)
+            criteria = os.path.join(directory, "criteria.yaml")
+            with open(criteria, "w") as f:
+                f.write(CRITERIA)
+            result = run_tool(index, "--criteria", criteria, "--json")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            by_case = {v["variables"]["case"]: v["operability_percent"] for v in json.loads(result.stdout)["variants"]}
+            self.assertEqual(set(by_case), {"h0_passive", "h0_active"})
+            self.assertAlmostEqual(by_case["h0_passive"], 30.0, delta=1e-12)
+            self.assertAlmostEqual(by_case["h0_active"], 85.0, delta=1e-12)
 
 
 class BadCriteriaFiles(unittest.TestCase):
