@@ -84,6 +84,17 @@ int main(int argc, char** argv) {
   operability->add_option("-o,--output", operability_options.output_directory, "directory of operability.csv/.json/.png");
   operability->add_flag("--json", operability_options.json, "print the JSON summary instead of the table");
 
+  SweepOptions sweep_options;
+  CLI::App* sweep = app.add_subcommand("sweep", "run a design matrix or a scatter diagram of cases (docs/sweeps.md)");
+  sweep->add_option("sweep", sweep_options.sweep_path, "sweep file (YAML)")->required();
+  sweep->add_option("-o,--output", sweep_options.output_directory,
+                    "directory of the runs, their logs and the index (default results/<sweep name>)");
+  sweep->add_option("-j,--jobs", sweep_options.jobs, "runs at once on this machine (worker processes)")
+      ->check(CLI::Range(1, 1024));
+  sweep->add_flag("--resume,!--no-resume", sweep_options.resume,
+                  "skip runs whose result file is complete with the same hash (default), or rerun all");
+  sweep->add_flag("-q,--quiet", sweep_options.quiet, "no progress line and no summary");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -99,6 +110,7 @@ int main(int argc, char** argv) {
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
     if (*stats) return stats_command(stats_options);
     if (*operability) return operability_command(operability_options);
+    if (*sweep) return sweep_command(sweep_options);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
     return 2;

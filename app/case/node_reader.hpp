@@ -33,6 +33,9 @@ class NodeReader {
   /// Requires a map whose keys are all keys of `form` of the schema section `section`
   /// (app/case/case_schema.hpp); an unknown key is an error with a did-you-mean.
   void expect_section(std::string_view section, std::string_view form = {}) const;
+  /// Requires a map whose keys are all in `allowed` (for files other than a case, e.g. a
+  /// sweep file, whose key tables are their own); an unknown key has a did-you-mean.
+  void expect_keys(const std::vector<std::string_view>& allowed) const;
   bool has(const std::string& key) const;
   /// A required entry.
   NodeReader operator[](const std::string& key) const;
@@ -68,7 +71,6 @@ class NodeReader {
   [[noreturn]] void fail(const std::string& found, const std::string& expected) const;
 
  private:
-  void expect_keys(const std::vector<std::string_view>& allowed) const;
   /// The scalar's value as an expression, unchecked.
   double evaluate() const;
   /// Fails unless lower <= value <= upper (so NaN fails too).

@@ -2,7 +2,9 @@
 
 #include <filesystem>
 
+#include "app/case/input_error.hpp"
 #include "app/output/output_error.hpp"
+#include "kernel/system/ode_system.hpp"
 
 namespace heavesim {
 
@@ -12,6 +14,22 @@ std::atomic<int>& stop_signal_value() {
 }
 
 extern "C" void request_stop_signal(int signal) { stop_signal_value() = signal; }
+
+int exit_code_reporting_errors(const std::function<int()>& command) {
+  try {
+    return command();
+  } catch (const InputError& e) {
+    fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
+    return 2;
+  } catch (const NumericalError& e) {
+    fmt::print(stderr, "heavesim: numerical failure at t = {:.6g} s: {}\n  suggestion: {}\n", e.time(), e.what(),
+               e.suggestion());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "heavesim: error: {}\n", e.what());
+    return 1;
+  }
+}
 
 int stopped_before_the_run(const std::string& case_name) {
   fmt::print(stderr, "heavesim: stopped by signal {} before the run of case '{}' started; no result file written\n",

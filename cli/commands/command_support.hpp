@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <functional>
 #include <string>
 
 #include <fmt/format.h>
@@ -78,6 +79,11 @@ class StopSignals {
   void (*previous_term_)(int) = SIG_DFL;
   void (*previous_file_size_)(int) = SIG_DFL;
 };
+
+/// Runs a command and turns what it throws into the product's exit codes and messages:
+/// InputError 2 ("heavesim: bad input: ..."), NumericalError 3 (time, suggestion), any
+/// other exception 1. main() runs every command through it; the sweep runs each case so.
+int exit_code_reporting_errors(const std::function<int()>& command);
 
 /// "stopped by signal N before the run of case ... started"; returns exit code 1.
 int stopped_before_the_run(const std::string& case_name);

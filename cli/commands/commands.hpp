@@ -56,6 +56,16 @@ struct OperabilityOptions {
 };
 /// heavesim operability: runs scripts/operability.py (docs/operability.md); its exit code.
 int operability_command(const OperabilityOptions& options);
+struct SweepOptions {
+  std::string sweep_path;
+  std::string output_directory;  // default results/<sweep file stem>
+  int jobs = 1;                  // -j: worker processes (ignored under mpirun: the ranks)
+  bool resume = true;            // skip runs already complete with the same hash
+  bool quiet = false;
+};
+/// heavesim sweep: every run of a sweep file, their index (docs/sweeps.md). Exit code 0
+/// when every run is complete, 4 when some failed, 2 for a bad sweep file or case, 1 if stopped.
+int sweep_command(const SweepOptions& options);
 
 /// heavesim import-mksim: the MKSim model at `model_path` written as the case `case_path`.
 int import_mksim_command(const std::string& model_path, const std::string& case_path);

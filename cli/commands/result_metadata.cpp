@@ -1,37 +1,12 @@
 #include "cli/commands/result_metadata.hpp"
 
-#include <openssl/evp.h>
-
-#include <chrono>
-#include <ctime>
-
 #include <fmt/format.h>
 
+#include "app/case/sha256.hpp"
+#include "app/output/utc_now.hpp"
 #include "app/version.hpp"
 
 namespace heavesim {
-namespace {
-
-/// SHA-256 of the resolved case text (OpenSSL), to identify the exact input of a result.
-std::string sha256_hex(const std::string& message) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  EVP_Digest(message.data(), message.size(), digest, &length, EVP_sha256(), nullptr);
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
-  return hex;
-}
-
-std::string utc_now() {
-  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  std::tm utc{};
-  gmtime_r(&now, &utc);
-  char text[32];
-  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return text;
-}
-
-}  // namespace
 
 void write_result_metadata(ResultFile& file, const CaseDefinition& definition) {
   file.set_attribute("/", "heavesim_version", std::string(heavesim_version));

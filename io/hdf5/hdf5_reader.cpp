@@ -196,6 +196,29 @@ std::optional<double> Reader::number_attribute(const std::string& object, const 
   return values.front();
 }
 
+std::vector<std::string> Reader::attribute_names(const std::string& object) const {
+  std::vector<std::string> names;
+  if (!has(object)) return names;
+  auto visit = [](hid_t, const char* name, const H5A_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->push_back(name);
+    return 0;
+  };
+  if (H5Aiterate_by_name(file_.get(), object.c_str(), H5_INDEX_NAME, H5_ITER_INC, nullptr, visit, &names, H5P_DEFAULT) < 0)
+    fail(object, "attributes that cannot be listed", "a readable object");
+  return names;
+}
+
+std::optional<double> Reader::scalar_number_attribute(const std::string& object, const std::string& name) const {
+  if (H5Aexists_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT) <= 0) return std::nullopt;
+  const Handle attribute(H5Aopen_by_name(file_.get(), object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT));
+  const Handle type(H5Aget_type(attribute.get()));
+  const H5T_class_t type_class = H5Tget_class(type.get());
+  const Handle space(H5Aget_space(attribute.get()));
+  if ((type_class != H5T_INTEGER && type_class != H5T_FLOAT) || H5Sget_simple_extent_npoints(space.get()) != 1)
+    return std::nullopt;
+  return number_attribute(object, name);
+}
+
 std::vector<std::string> Reader::datasets() const {
   std::vector<std::string> names;
   auto visit = [](hid_t, const char* name, const H5O_info_t* info, void* data) -> herr_t {

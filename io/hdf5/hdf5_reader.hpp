@@ -42,6 +42,11 @@ class Reader {
   std::optional<std::string> text_attribute(const std::string& object, const std::string& name) const;
   /// The object's numeric attribute `name` (its first element, as double), if it has one.
   std::optional<double> number_attribute(const std::string& object, const std::string& name) const;
+  /// The names of the object's attributes, in HDF5's (alphabetical) order.
+  std::vector<std::string> attribute_names(const std::string& object) const;
+  /// The object's attribute `name` when it is one number (integer or float, one
+  /// element); nothing when it is text, a record or an array.
+  std::optional<double> scalar_number_attribute(const std::string& object, const std::string& name) const;
   /// Every dataset in the file, as absolute paths, in HDF5's (alphabetical) order.
   std::vector<std::string> datasets() const;
   /// The dataset's dimension names (netCDF4: the names of the dimension scales attached

@@ -1,6 +1,8 @@
 // Every malformed case in tests/bad_cases is rejected by `heavesim check` with exit
 // code 2 and a message that names the file, the line (marked "# <-- error" in the
 // file), the key path and what was expected ("# expect-path:", "# expect-text:").
+// A sweep file says "# expect-command: sweep" (run by `heavesim sweep`, refused before
+// any run); "# expect-file: F" when the marked line is in F (a scatter diagram).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -16,17 +18,26 @@ struct BadCase {
   int line = 0;
   std::string key_path;
   std::string text;
+  std::string command = "check";
+  std::string error_file;  // the file whose line is marked (default: the case itself)
 };
 
 BadCase read_expectations(const std::filesystem::path& file) {
   BadCase bad;
-  bad.path = file.string();
+  bad.path = bad.error_file = file.string();
   std::ifstream in(file);
   std::string line;
   for (int number = 1; std::getline(in, line); ++number) {
     if (line.rfind("# expect-path:", 0) == 0) bad.key_path = line.size() > 15 ? line.substr(15) : "";
     if (line.rfind("# expect-text:", 0) == 0) bad.text = line.substr(15);
+    if (line.rfind("# expect-command:", 0) == 0) bad.command = line.substr(18);
+    if (line.rfind("# expect-file:", 0) == 0) bad.error_file = (file.parent_path() / line.substr(15)).string();
     if (line.find("# <-- error") != std::string::npos && bad.line == 0) bad.line = number;
+  }
+  if (bad.error_file != bad.path) {
+    std::ifstream marked(bad.error_file);
+    for (int number = 1; std::getline(marked, line); ++number)
+      if (line.find("# <-- error") != std::string::npos && bad.line == 0) bad.line = number;
   }
   return bad;
 }
@@ -45,9 +56,14 @@ TEST(BadInput, EveryCaseIsRejectedWithFileLineKeyPathAndExpectation) {
   for (const BadCase& bad : corpus()) {
     SCOPED_TRACE(bad.path);
     ASSERT_GT(bad.line, 0) << "the file marks no line with '# <-- error'";
-    const testing::CommandResult result = testing::run_command_line("timeout 10 " + testing::heavesim_binary() + " check " + bad.path);
+    const std::string arguments =
+        bad.command == "sweep" ? " sweep " + bad.path + " -o " + ::testing::TempDir() + "bad_sweep" : " check " + bad.path;
+    const testing::CommandResult result = testing::run_command_line("timeout 10 " + testing::heavesim_binary() + arguments);
     EXPECT_EQ(result.exit_code, 2) << "(124 means it hung) " << result.output;
-    const std::string position = bad.path + ":" + std::to_string(bad.line) + ":";
+    if (bad.command == "sweep") {
+      EXPECT_FALSE(std::filesystem::exists(::testing::TempDir() + "bad_sweep/index.h5")) << "a run started";
+    }
+    const std::string position = bad.error_file + ":" + std::to_string(bad.line) + ":";
     EXPECT_NE(result.output.find(position), std::string::npos) << "no '" << position << "' in: " << result.output;
     if (!bad.key_path.empty()) {
       EXPECT_NE(result.output.find(": " + bad.key_path + ": "), std::string::npos) << result.output;
