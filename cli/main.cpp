@@ -77,6 +77,13 @@ int main(int argc, char** argv) {
   stats->add_option("--after", stats_options.after, "s, start of the window (default the run's output.evaluate_after)");
   stats->add_flag("--json", stats_options.json, "print JSON instead of tables");
 
+  OperabilityOptions operability_options;
+  CLI::App* operability = app.add_subcommand("operability", "operability of a sweep over its scatter diagram (docs/operability.md)");
+  operability->add_option("index", operability_options.index_path, "the sweep's index file (HDF5)")->required();
+  operability->add_option("--criteria", operability_options.criteria_path, "criteria file (YAML)")->required();
+  operability->add_option("-o,--output", operability_options.output_directory, "directory of operability.csv/.json/.png");
+  operability->add_flag("--json", operability_options.json, "print the JSON summary instead of the table");
+
   SweepOptions sweep_options;
   CLI::App* sweep = app.add_subcommand("sweep", "run a design matrix or a scatter diagram of cases (docs/sweeps.md)");
   sweep->add_option("sweep", sweep_options.sweep_path, "sweep file (YAML)")->required();
@@ -102,6 +109,7 @@ int main(int argc, char** argv) {
     if (*validate) return validate_command(validation_names, list_only);
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
     if (*stats) return stats_command(stats_options);
+    if (*operability) return operability_command(operability_options);
     if (*sweep) return sweep_command(sweep_options);
   } catch (const InputError& e) {
     fmt::print(stderr, "heavesim: bad input: {}\n", e.what());

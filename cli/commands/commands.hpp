@@ -48,6 +48,14 @@ struct StatsOptions {
 /// heavesim stats: response statistics of a result file's channels (docs/physics/statistics.md).
 int stats_command(const StatsOptions& options);
 
+struct OperabilityOptions {
+  std::string index_path;        // the sweep's index (HDF5)
+  std::string criteria_path;     // --criteria: the limits (YAML)
+  std::string output_directory;  // -o: default the index's directory
+  bool json = false;
+};
+/// heavesim operability: runs scripts/operability.py (docs/operability.md); its exit code.
+int operability_command(const OperabilityOptions& options);
 struct SweepOptions {
   std::string sweep_path;
   std::string output_directory;  // default results/<sweep file stem>
