@@ -15,21 +15,25 @@ For a steady sinusoid the ratio of standard deviations is the amplitude ratio. W
 
     /usr/bin/python3 scripts/compensation_study.py [--amplitude 2] [--periods 6 8 10 12 14 16] [-o results]
 
-Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*).
+Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*) after the
+build: it reads result files with the heavesim package (docs/python.md).
 """
 import argparse
 import concurrent.futures
 import csv
 import os
+import pathlib
 import subprocess
 import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 MODES = {"locked": "locked", "passive": "passive", "active": "passive + active (force actuator)",
@@ -38,11 +42,11 @@ MODES = {"locked": "locked", "passive": "passive", "active": "passive + active (
 
 def efficiency(path):
     """(eta, platform heave amplitude [m]) over the last 300 s."""
-    with h5py.File(path, "r") as f:
-        time = f["time"][:]
+    with heavesim.open(path) as r:
+        time = r.time
         window = time >= time[-1] - 300.0
-        platform = f["bodies/platform/position"][:, 2][window]
-        string = f["bodies/drill_string/position"][:, 2][window]
+        platform = r["bodies/platform/position"][:, 2][window]
+        string = r["bodies/drill_string/position"][:, 2][window]
     return 1.0 - np.std(string) / np.std(platform), np.sqrt(2.0) * np.std(platform)
 
 

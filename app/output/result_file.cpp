@@ -24,6 +24,24 @@ constexpr const char* samples_written_name = "samples_written";
 constexpr const char* reserved_room_name = "_reserved_room";
 constexpr hsize_t summary_room_bytes = 32768;
 
+// The 1.10 file format, which SWMR needs (HDF5 User's Guide, "Single Writer / Multiple
+// Reader"): superblock version 3 and version 2 object headers.
+Handle swmr_file_access() {
+  Handle access(H5Pcreate(H5P_FILE_ACCESS));
+  H5Pset_libver_bounds(access.get(), H5F_LIBVER_LATEST, H5F_LIBVER_LATEST);
+  return access;
+}
+
+// Attributes stay in their object's header however many there are. In the 1.10 format
+// an object moves its attributes to "dense" storage (a fractal heap and a B-tree) past 8
+// of them; /summary and the root get dozens, written when the run ends, and dense
+// storage would then allocate heap blocks in SWMR mode. 65535 is the largest bound.
+Handle compact_attributes(hid_t property_class) {
+  Handle properties(H5Pcreate(property_class));
+  H5Pset_attr_phase_change(properties.get(), 65535, 0);
+  return properties;
+}
+
 }  // namespace
 
 ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
@@ -36,7 +54,8 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   // stale complete = 1 file must not stand for a run that then fails in its set-up.
   if (std::filesystem::exists(path, error) && !std::filesystem::remove(path, error))
     throw OutputError(path_, "cannot replace result file", error.message());
-  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  const Handle access = swmr_file_access(), create = compact_attributes(H5P_FILE_CREATE);
+  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, create.get(), access.get()));
   if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
   set_attribute("/", samples_written_name, 0L);
   const std::vector<unsigned char> room(summary_room_bytes, 0);
@@ -86,7 +105,8 @@ Handle ResultFile::open_object(const std::string& object_path) {
   Handle object;
   if (exists <= 0) {
     const Handle links = hdf5::intermediate_group_links();
-    object = Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+    const Handle create = compact_attributes(H5P_GROUP_CREATE);
+    object = Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), create.get(), H5P_DEFAULT));
   } else {
     object = Handle(H5Oopen(file_.get(), object_path.c_str(), H5P_DEFAULT));
   }
@@ -174,7 +194,7 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
   const hsize_t chunk[2] = {chunk_rows, static_cast<hsize_t>(std::max(columns, 1))};
   const Handle space(H5Screate_simple(rank, initial, maximum));
-  const Handle create(H5Pcreate(H5P_DATASET_CREATE));
+  const Handle create = compact_attributes(H5P_DATASET_CREATE);
   // Chunks allocated now and never filled: see the header (no structural change later).
   const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
                           H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
@@ -266,6 +286,10 @@ void ResultFile::publish() {
     throw OutputError(path_, "cannot create result file", cause);
   }
   published_ = true;
+  // From here on readers may open the file while it is written (H5F_ACC_SWMR_READ,
+  // h5py's swmr=True): HDF5 orders its flushes so that a reader always finds a
+  // consistent file. Needs every attribute handle closed (ResultFile keeps none).
+  check(H5Fstart_swmr_write(file_.get()) >= 0, "cannot start single-writer/multiple-reader writing of");
 }
 
 void ResultFile::close() {

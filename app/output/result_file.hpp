@@ -26,10 +26,20 @@
 //  * A series longer than its reservation (a caller that did not know the count) is
 //    extended, the data flushed, and only then is `samples_written` raised, in a flush
 //    of its own: readers trust the count, not the extent.
-//  * SWMR (H5F_ACC_SWMR_WRITE) orders HDF5's flushes, but needs the 1.10 file format,
-//    whose superblock marks the file "open for writing"; after SIGKILL every
-//    non-SWMR reader (h5py.File(path) included) then refuses it until `h5clear -s`.
-//    The 1.8-compatible format kept here opens anywhere after any stop.
+//  * Once published the file is written in SWMR mode (single writer, multiple readers,
+//    H5Fstart_swmr_write; the 1.10 file format): a reader that opens it with
+//    H5F_ACC_SWMR_READ (h5py: swmr=True) while the run goes reads whole samples, the
+//    first `samples_written` rows, after refreshing what it holds (H5Drefresh, and
+//    H5Orefresh of the root for the attribute). SWMR also orders HDF5's own flushes.
+//    Its price: the 1.10 superblock marks the file "open for writing" until close, so
+//    after SIGKILL only SWMR readers open it (every heavesim reader does) until
+//    `h5clear -s` clears the mark. A stopped or failed run closes the file: it then
+//    opens anywhere.
+//  * Everything a run rewrites (samples_written, complete, the per-series statistics)
+//    exists from the layout on and is overwritten in place. What the end of a run adds
+//    (the /summary attributes, whose names depend on the case, and a failure's text) is
+//    created in SWMR mode: HDF5 1.10.8 does it, and a reader reads /summary once
+//    complete = 1 (docs/result-file.md).
 // An orderly end (close) shrinks every series to `samples_written`; after SIGKILL the
 // series keep their reserved length and the rows past `samples_written` are unwritten.
 //
