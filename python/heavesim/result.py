@@ -1,11 +1,10 @@
 """Reading heavesim result files (docs/result-file.md, docs/python.md).
 
 A Result reads lazily with h5py: opening reads the names, units and attributes; a
-channel's values are read when first asked for. Files are opened as SWMR readers
-(single writer, multiple readers), so a file whose run is still writing it, or whose
-writer was killed, opens too; refresh() then sees the samples written since. Only the
-first `samples_written` rows of every series are whole samples (the rest is space
-reserved for the run), so every array returned here stops there.
+channel's values are read when first asked for. A file whose run is still writing it,
+or whose writer was killed, opens too; refresh() reopens it and sees the samples
+written since. Only the first `samples_written` rows of every series are whole samples
+(the rest is space reserved for the run), so every array returned here stops there.
 """
 import numpy
 import h5py
@@ -27,12 +26,13 @@ def _attributes(node):
 
 
 def _open_file(path):
-    # SWMR read first: it opens a file being written or left behind by a killed writer
-    # (whose 1.10 superblock still says "open for writing") as well as a closed one.
+    # heavesim's writer takes no file lock: a plain open works while it writes. A file
+    # written in HDF5's SWMR mode by another program, still open or killed, opens as a
+    # SWMR reader.
     try:
-        return h5py.File(path, "r", swmr=True)
-    except OSError:
         return h5py.File(path, "r")
+    except OSError:
+        return h5py.File(path, "r", swmr=True)
 
 
 class Channel:
@@ -187,9 +187,8 @@ class Result:
 
     # --- a file being written --------------------------------------------------
     def refresh(self):
-        """Re-reads samples_written and the attributes a running writer has changed.
-        HDF5 caches an object's attributes in the reader; reopening is how a SWMR reader
-        sees the root's attribute anew (h5py has no refresh for groups)."""
+        """Re-reads samples_written and the attributes a running writer has changed:
+        HDF5 caches what a reader has read, so the file is opened anew."""
         channels = list(self._channels) if self._channels is not None else None
         self._file.close()
         self._file = _open_file(self.path)

@@ -12,8 +12,8 @@ namespace heavesim {
 
 class H5File {
  public:
-  /// Opens as any reader should (docs/result-file.md): plainly, else as a SWMR reader,
-  /// which also opens a file its writer still has open or left behind when killed.
+  /// Opens read-only; a file written in HDF5's SWMR mode and left open by a killed
+  /// writer opens as a SWMR reader.
   explicit H5File(const std::string& path) {
     H5E_BEGIN_TRY { file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); } H5E_END_TRY;
     if (file_ < 0) file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);

@@ -68,7 +68,7 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
     ASSERT_NE(bracket, std::string::npos) << field;
     ASSERT_EQ(field.back(), ']') << field;
     const std::string name = field.substr(0, bracket), unit = field.substr(bracket + 2, field.size() - bracket - 3);
-    const std::string dataset = "/" + name.substr(0, name.find('.'));
+    const std::string dataset = "/" + name.substr(0, name.find_first_of(".["));
     ASSERT_TRUE(file.exists(dataset)) << field;
     const std::string units = file.string_attribute(dataset, "units");
     if (units.find(',') != std::string::npos) continue;  // several units: per column, checked above
