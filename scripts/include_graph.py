@@ -27,6 +27,7 @@ LAYERS = [
     ("app",),
     ("validation",),
     ("cli",),
+    ("python",),  # the Python package's module: calls the commands, as the executable does
 ]
 # validation/oracles are the independent references: Eigen and SUNDIALS only.
 ISOLATED = {"validation/oracles"}

@@ -9,38 +9,36 @@ child at the joint origin, docs/result-file.md), one panel per joint. Writes
     /usr/bin/python3 scripts/plot_reaction_envelope.py results/drilling.h5 -o results [--from 300]
     [--skip heave]   # leave out joints (e.g. a prescribed platform joint carrying the hull)
 
-Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*).
+Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*) after the
+build: it reads result files with the heavesim package (docs/python.md).
 """
 import argparse
 import csv
 import math
 import os
+import pathlib
+import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
+
 COMPONENTS = ["Fx", "Fy", "Fz", "Mx", "My", "Mz"]
 
 
-def text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
-
-
-def envelopes(f, start, skip):
-    time = f["time"][:]
-    window = time >= start
-    order = text(f["joints"].attrs.get("order", "")).split(",")
-    names = [name for name in order if name in f["joints"]] or list(f["joints"])
+def envelopes(r, start, skip):
+    window = r.time >= start
     rows = []
-    for name in names:
-        joint = f["joints"][name]
-        if name in skip or "reaction_force_joint" not in joint:
+    for name in r.joints:
+        if name in skip or f"joints/{name}/reaction_force_joint" not in r:
             continue
-        wrench = np.hstack([joint["reaction_force_joint"][:][window], joint["reaction_moment_joint"][:][window]])
+        wrench = np.hstack([r[f"joints/{name}/reaction_force_joint"][window],
+                            r[f"joints/{name}/reaction_moment_joint"][window]])
         rows.append((name, wrench.min(axis=0), wrench.max(axis=0)))
     return rows
 
@@ -54,8 +52,8 @@ def main():
     args = parser.parse_args()
     stem = os.path.splitext(os.path.basename(args.result))[0]
     os.makedirs(args.output, exist_ok=True)
-    with h5py.File(args.result, "r") as f:
-        rows = envelopes(f, args.start, set(args.skip))
+    with heavesim.open(args.result) as r:
+        rows = envelopes(r, args.start, set(args.skip))
     if not rows:
         raise SystemExit(f"{args.result}: no joint reactions recorded (output.channels must include reactions)")
 

@@ -4,35 +4,26 @@ and moments, and energy, one PNG each.
 
     /usr/bin/python3 scripts/plot_run.py results/two_link.h5 [-o results]
 
-Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*).
+Run it with Debian's /usr/bin/python3 (numpy, h5py, matplotlib from python3-*) after
+the build: it reads the file with the heavesim package (docs/python.md).
 """
 import argparse
 import os
+import pathlib
+import sys
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-
-def label(dataset, name):
-    units = dataset.attrs.get("units", "")
-    if isinstance(units, bytes):
-        units = units.decode()
-    return f"{name} [{units}]" if units else name
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
 
 
-def joints_in_model_order(f):
-    """Joint names in the model's (topological) order, as recorded by heavesim."""
-    if "joints" not in f:
-        return []
-    order = f["joints"].attrs.get("order", "")
-    if isinstance(order, bytes):
-        order = order.decode()
-    names = [name for name in order.split(",") if name in f["joints"]]
-    return names or list(f["joints"])
+def label(channel, name):
+    return f"{name} [{channel.units}]" if channel.units else name
 
 
 def save(fig, out, stem, kind):
@@ -44,20 +35,19 @@ def save(fig, out, stem, kind):
     return path
 
 
-def plot_joints(f, time, stem, out):
-    joints = [name for name in joints_in_model_order(f) if "q" in f["joints"][name]]
+def plot_joints(r, time, stem, out):
+    joints = [name for name in r.joints if f"joints/{name}/q" in r]
     if not joints:
         return None
     fig, (ax_q, ax_v) = plt.subplots(2, 1, sharex=True, figsize=(9, 6.5))
     for name in joints:
-        q, qd = f["joints"][name]["q"], f["joints"][name]["qd"]
+        q, qd = r[f"joints/{name}/q"], r[f"joints/{name}/qd"]
         for c in range(q.shape[1]):
             ax_q.plot(time, q[:, c], label=f"{name}" + (f"[{c}]" if q.shape[1] > 1 else ""))
         for c in range(qd.shape[1]):
             ax_v.plot(time, qd[:, c], label=f"{name}" + (f"[{c}]" if qd.shape[1] > 1 else ""))
-    first = f["joints"][joints[0]]
-    ax_q.set_ylabel(label(first["q"], "joint coordinate"))
-    ax_v.set_ylabel(label(first["qd"], "joint speed"))
+    ax_q.set_ylabel(label(r.channel(f"joints/{joints[0]}/q"), "joint coordinate"))
+    ax_v.set_ylabel(label(r.channel(f"joints/{joints[0]}/qd"), "joint speed"))
     ax_v.set_xlabel("time [s]")
     ax_q.set_title(f"{stem}: joint coordinates (relative angles) and speeds")
     for ax in (ax_q, ax_v):
@@ -66,17 +56,17 @@ def plot_joints(f, time, stem, out):
     return save(fig, out, stem, "joints")
 
 
-def plot_reactions(f, time, stem, out):
-    joints = [name for name in joints_in_model_order(f) if "reaction_force" in f["joints"][name]]
+def plot_reactions(r, time, stem, out):
+    joints = [name for name in r.joints if f"joints/{name}/reaction_force" in r]
     if not joints:
         return None
     fig, axes = plt.subplots(len(joints), 2, sharex=True, figsize=(11, 2.6 * len(joints)), squeeze=False)
     for row, name in enumerate(joints):
-        force, moment = f["joints"][name]["reaction_force"], f["joints"][name]["reaction_moment"]
+        force, moment = r.channel(f"joints/{name}/reaction_force"), r.channel(f"joints/{name}/reaction_moment")
         for c, axis in enumerate("xyz"):
-            axes[row, 0].plot(time, force[:, c], label=f"F{axis}")
-            axes[row, 1].plot(time, moment[:, c], label=f"M{axis}")
-        axes[row, 0].plot(time, np.linalg.norm(force, axis=1), "k--", lw=0.8, label="|F|")
+            axes[row, 0].plot(time, force.values[:, c], label=f"F{axis}")
+            axes[row, 1].plot(time, moment.values[:, c], label=f"M{axis}")
+        axes[row, 0].plot(time, np.linalg.norm(force.values, axis=1), "k--", lw=0.8, label="|F|")
         axes[row, 0].set_ylabel(f"{name}\n" + label(force, "force"))
         axes[row, 1].set_ylabel(label(moment, "moment"))
         for ax in axes[row]:
@@ -89,11 +79,10 @@ def plot_reactions(f, time, stem, out):
     return save(fig, out, stem, "reactions")
 
 
-def plot_energy(f, time, stem, out):
-    signals = f.get("signals", {})
-    if "total_energy" not in signals:
+def plot_energy(r, time, stem, out):
+    if "signals/total_energy" not in r:
         return None
-    kinetic, potential, total = (signals[name][:] for name in ("kinetic_energy", "potential_energy", "total_energy"))
+    kinetic, potential, total = (r[f"signals/{name}"] for name in ("kinetic_energy", "potential_energy", "total_energy"))
     fig, (ax_e, ax_d) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
     ax_e.plot(time, kinetic, label="kinetic")
     ax_e.plot(time, potential, label="potential")
@@ -118,11 +107,11 @@ def main():
     out = args.output or os.path.dirname(os.path.abspath(args.result))
     os.makedirs(out, exist_ok=True)
     stem = os.path.splitext(os.path.basename(args.result))[0]
-    with h5py.File(args.result, "r") as f:
-        if not f.attrs.get("complete", 0):
+    with heavesim.open(args.result) as r:
+        if not r.complete:
             print(f"plot_run: note: {args.result} is marked incomplete (complete = 0); plotting what it holds")
-        time = f["time"][:]
-        written = [plot(f, time, stem, out) for plot in (plot_joints, plot_reactions, plot_energy)]
+        time = r.time
+        written = [plot(r, time, stem, out) for plot in (plot_joints, plot_reactions, plot_energy)]
     for path in filter(None, written):
         print(f"plot_run: wrote {path}")
 

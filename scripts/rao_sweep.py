@@ -14,10 +14,14 @@ Usage: scripts/rao_sweep.py [--periods 6 8 10 ...] [-o results/rao]
 """
 import argparse
 import os
+import pathlib
 import subprocess
+import sys
 
-import h5py
 import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
+import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DATA = os.path.join(ROOT, "data", "mss_semisub")
@@ -57,9 +61,9 @@ def frequency_domain_rao(periods, heading_deg=180.0):
 
 
 def fit_heave(path, period, cycles):
-    with h5py.File(path, "r") as f:
-        t = f["time"][:]
-        x = np.asarray(f["joints/heave/q"][:]).reshape(len(t))
+    with heavesim.open(path) as r:
+        t = r.time
+        x = np.asarray(r["joints/heave/q"]).reshape(len(t))
     keep = t >= t[-1] - cycles * period
     w = 2 * np.pi / period
     basis = np.column_stack([np.cos(w * t[keep]), np.sin(w * t[keep]), np.ones(keep.sum())])

@@ -38,6 +38,51 @@ std::string speed_units(const JointType& type, const std::string& per) {
       type);
 }
 
+/// The unit of each coordinate of a joint, in order (CSV headers; the `units` attribute
+/// above describes the same in words).
+std::vector<std::string> coordinate_column_units(const JointType& type, int coordinates) {
+  return std::visit(
+      [coordinates](const auto& joint) -> std::vector<std::string> {
+        using J = std::decay_t<decltype(joint)>;
+        if constexpr (std::is_same_v<J, PrismaticJoint>) return {"m"};
+        if constexpr (std::is_same_v<J, CylindricalJoint>) return {"rad", "m"};
+        if constexpr (std::is_same_v<J, SphericalJoint>) return {"-", "-", "-", "-"};
+        if constexpr (std::is_same_v<J, FreeJoint>) return {"m", "m", "m", "-", "-", "-", "-"};
+        return std::vector<std::string>(coordinates, "rad");
+      },
+      type);
+}
+
+/// The unit of each joint speed, in order; `per` = "/s" gives accelerations.
+std::vector<std::string> speed_column_units(const JointType& type, int speeds, const std::string& per) {
+  return std::visit(
+      [speeds, &per](const auto& joint) -> std::vector<std::string> {
+        using J = std::decay_t<decltype(joint)>;
+        if constexpr (std::is_same_v<J, PrismaticJoint>) return {"m/s" + per};
+        if constexpr (std::is_same_v<J, CylindricalJoint>) return {"rad/s" + per, "m/s" + per};
+        if constexpr (std::is_same_v<J, FreeJoint>)
+          return {"rad/s" + per, "rad/s" + per, "rad/s" + per, "m/s" + per, "m/s" + per, "m/s" + per};
+        return std::vector<std::string>(speeds, "rad/s" + per);
+      },
+      type);
+}
+
+/// The unit of a constraint row's multiplier: a force for rows that hold a distance, a
+/// moment for rows that hold an angle.
+std::string multiplier_unit(ConstraintRowKind kind) {
+  switch (kind) {
+    case ConstraintRowKind::along:
+    case ConstraintRowKind::distance:
+    case ConstraintRowKind::length:
+      return "N";
+    case ConstraintRowKind::perpendicular:
+    case ConstraintRowKind::angle:
+      return "N m";
+    default:
+      return "N or N m";
+  }
+}
+
 }  // namespace
 
 Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
@@ -65,8 +110,10 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* f
   }
   if (csv_) {
     std::vector<std::string> header;
+    // "joints/hook/q [m]": the units of the HDF5 attribute, per column.
     for (const Channel& channel : channels_)
-      for (const std::string& label : channel.labels) header.push_back(channel.path.substr(1) + label);
+      for (std::size_t c = 0; c < channel.labels.size(); ++c)
+        header.push_back(channel.path.substr(1) + channel.labels[c] + " [" + channel.column_units[c] + "]");
     csv_->write_header(header);
   }
 }
@@ -79,6 +126,7 @@ void Recorder::add(Channel channel) {
     else
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
+  if (channel.column_units.empty()) channel.column_units.assign(width, channel.units);
   channel.statistics = RunningStatistics(width);
   // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
   // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
@@ -90,7 +138,14 @@ void Recorder::add(Channel channel) {
     options.segment_length = -1;
   }
   for (int c = 0; c < width; ++c) channel.response.emplace_back(options, window_samples_);
-  if (file_) channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
+  if (file_) {
+    channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
+    // The statistics exist from the start, NaN until finish() overwrites them in place
+    // (the file is then in SWMR mode, where attributes are rewritten, not created).
+    const std::vector<std::string> names = statistic_names(channel);
+    file_->set_record_attribute(channel.path, "statistics", names,
+                                std::vector<double>(names.size() * width, std::nan("")));
+  }
   channels_.push_back(std::move(channel));
 }
 
@@ -121,7 +176,7 @@ void Recorder::define_channels(const CaseDefinition& definition) {
              const Motion& v = system.data().velocity_world[i];
              map3(out) = v.angular();
              map3(out + 3) = v.point_velocity(X_world_body().translation());
-           }});
+           }, -1, {}, {}, {"rad/s", "rad/s", "rad/s", "m/s", "m/s", "m/s"}});
     }
   }
 
@@ -133,16 +188,16 @@ void Recorder::define_channels(const CaseDefinition& definition) {
       add({base + "/q", joint.nq, coordinate_units(joint.type),
            type + " joint coordinates (order in docs/result-file.md)", {}, [&system, joint](double, double* out) {
              Eigen::Map<VectorX>(out, joint.nq) = system.configuration().segment(joint.q_index, joint.nq);
-           }});
+           }, -1, {}, {}, coordinate_column_units(joint.type, joint.nq)});
       add({base + "/qd", joint.nv, speed_units(joint.type, ""),
            type + " joint speeds (child-side axes for spherical and free joints)", {},
            [&system, joint](double, double* out) {
              Eigen::Map<VectorX>(out, joint.nv) = system.velocity().segment(joint.v_index, joint.nv);
-           }});
+           }, -1, {}, {}, speed_column_units(joint.type, joint.nv, "")});
       add({base + "/qdd", joint.nv, speed_units(joint.type, "/s"), type + " joint accelerations", {},
            [&system, joint](double, double* out) {
              Eigen::Map<VectorX>(out, joint.nv) = system.data().qdd.segment(joint.v_index, joint.nv);
-           }});
+           }, -1, {}, {}, speed_column_units(joint.type, joint.nv, "/s")});
     }
     if (output.reactions) {
       needs_reactions_ = true;
@@ -204,15 +259,18 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
     if (constraint.is_driver()) continue;  // in /drivers (define_driver_channels)
     const std::string base = "/constraints/" + constraint.name;
     const int rows = static_cast<int>(constraint.rows.size());
-    std::vector<std::string> labels;
-    for (const ConstraintRow& row : constraint.rows) labels.push_back("." + row.description);
+    std::vector<std::string> labels, units;
+    for (const ConstraintRow& row : constraint.rows) {
+      labels.push_back("." + row.description);
+      units.push_back(multiplier_unit(row.kind));
+    }
     add({base + "/multipliers", rows, "N, N m or N/m",
          "Lagrange multipliers lambda of the constraint rows (M qdd + C = tau + J^T lambda); "
          "minimum-norm where rows are redundant; a driver's is the force (N) or torque (N m) it applies "
          "along its coordinate",
          labels, [&system, &constraint, rows](double, double* out) {
            Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
-         }});
+         }, -1, {}, {}, units});
     if (!constraint.acts_on_frames()) continue;
     // The wrench on side B (the loop joint's child side) about frame B's origin.
     auto wrench_at_b = [&system, &constraint]() {
@@ -333,6 +391,14 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   ++samples_;
 }
 
+std::vector<std::string> Recorder::statistic_names(const Channel& channel) {
+  const bool extremes = has_extreme_statistics(channel);
+  std::vector<std::string> names;
+  for (const stats::StatisticField& field : stats::statistic_fields())
+    if (extremes || field.group == stats::FieldGroup::moments) names.push_back(field.name);
+  return names;
+}
+
 bool Recorder::has_extreme_statistics(const Channel& channel) {
   if (channel.path == "/time") return false;
   return channel.columns == 0 || channel.path.find("/reaction_") != std::string::npos;
@@ -342,9 +408,7 @@ void Recorder::write_response_statistics(Channel& channel) {
   // One compound attribute per channel (a record per column, a field per statistic): one
   // HDF5 attribute write instead of ~40 keeps the end of a run short (docs/performance.md).
   const bool extremes = has_extreme_statistics(channel);
-  std::vector<std::string> names;
-  for (const stats::StatisticField& field : stats::statistic_fields())
-    if (extremes || field.group == stats::FieldGroup::moments) names.push_back(field.name);
+  const std::vector<std::string> names = statistic_names(channel);
   std::vector<double> values;
   for (stats::ResponseStatisticsAccumulator& accumulator : channel.response) {
     const stats::ResponseStatistics column = accumulator.result();

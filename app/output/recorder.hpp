@@ -75,6 +75,8 @@ class Recorder {
     /// Per column, over the evaluation window: the response statistics of
     /// docs/physics/statistics.md (moments, crossings, peaks, extremes, Welch spectrum).
     std::vector<stats::ResponseStatisticsAccumulator> response = {};
+    /// Per column, the unit of the CSV header ("[m]"); default: `units` for every column.
+    std::vector<std::string> column_units = {};
   };
   void add(Channel channel);
   /// The evaluation window's statistics of every column of `channel` as its attributes.
@@ -82,6 +84,8 @@ class Recorder {
   /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
   /// series but /time, and reactions) or the moments only.
   static bool has_extreme_statistics(const Channel& channel);
+  /// The fields of the channel's `statistics` compound attribute.
+  static std::vector<std::string> statistic_names(const Channel& channel);
   void define_channels(const CaseDefinition& definition);
   /// Constraint drift always; per-constraint multipliers and wrenches with reactions.
   void define_constraint_channels(const OutputSettings& output);

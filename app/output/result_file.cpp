@@ -16,13 +16,32 @@ namespace {
 using hdf5::Handle;
 
 constexpr const char* samples_written_name = "samples_written";
-// Room held in /summary's object header for the attributes written when the run ends
-// (their names depend on the case): released just before the first of them is created,
-// so that they fill space the header already has instead of a new continuation block
-// (an allocation, which a SIGKILL inside HDF5's flush can leave pointing past the end
-// of file; see the header). A v1 attribute message of a number takes ~80 bytes.
+// Room held in the object headers of the root and of /summary for the attributes written
+// when the run ends (their names depend on the case; a failure's text): released just
+// before the first of them is created, so that they fill space the header already has
+// instead of a new continuation block (an allocation, which a SIGKILL inside HDF5's
+// flush can leave pointing past the end of file; see the header). A v1 attribute
+// message of a number takes ~80 bytes; what is left of the room is released at close.
 constexpr const char* reserved_room_name = "_reserved_room";
-constexpr hsize_t summary_room_bytes = 32768;
+constexpr hsize_t root_room_bytes = 8192, summary_room_bytes = 32768;
+
+// The writer takes no HDF5 file lock (H5Pset_file_locking, HDF5 1.10.7): a reader may
+// open the file while the run writes it without HDF5_USE_FILE_LOCKING=FALSE. What it
+// reads then is what a SIGKILL at that moment would leave, whole samples up to
+// samples_written (the header), because nothing structural changes during the run.
+Handle unlocked_file_access() {
+  Handle access(H5Pcreate(H5P_FILE_ACCESS));
+  if (H5Pset_file_locking(access.get(), false, true) < 0) access.reset();
+  return access;
+}
+
+// No chunk cache: a write goes to disk in H5Dwrite, where its failure is seen, and a
+// dataset never holds data that closing it would have to write.
+Handle uncached_dataset_access() {
+  Handle access(H5Pcreate(H5P_DATASET_ACCESS));
+  if (H5Pset_chunk_cache(access.get(), H5D_CHUNK_CACHE_NSLOTS_DEFAULT, 0, 1.0) < 0) access.reset();
+  return access;
+}
 
 }  // namespace
 
@@ -36,12 +55,15 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   // stale complete = 1 file must not stand for a run that then fails in its set-up.
   if (std::filesystem::exists(path, error) && !std::filesystem::remove(path, error))
     throw OutputError(path_, "cannot replace result file", error.message());
-  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
+  const Handle access = unlocked_file_access();
+  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
   set_attribute("/", samples_written_name, 0L);
-  const std::vector<unsigned char> room(summary_room_bytes, 0);
-  const Handle room_space(H5Screate_simple(1, &summary_room_bytes, nullptr));
-  write_attribute("/summary", reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
+  for (const auto& [object, bytes] : {std::pair{"/", root_room_bytes}, std::pair{"/summary", summary_room_bytes}}) {
+    const std::vector<unsigned char> room(bytes, 0);
+    const Handle room_space(H5Screate_simple(1, &bytes, nullptr));
+    write_attribute(object, reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
+  }
 }
 
 ResultFile::~ResultFile() {
@@ -110,7 +132,8 @@ void ResultFile::write_attribute(const std::string& object_path, const std::stri
     }
   }
   if (!attribute.valid()) {
-    if (name != reserved_room_name && H5Aexists(object.get(), reserved_room_name) > 0)
+    // Once published only: while the layout is built, headers grow as they need.
+    if (published_ && name != reserved_room_name && H5Aexists(object.get(), reserved_room_name) > 0)
       check(H5Adelete(object.get(), reserved_room_name) >= 0, "cannot write result file");
     attribute = Handle(H5Acreate2(object.get(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT));
   }
@@ -179,10 +202,8 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
                           H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
                           H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0;
-  // No chunk cache: a write goes to disk in H5Dwrite, where its failure is seen, and a
-  // dataset never holds data that closing it would have to write.
-  const Handle access(H5Pcreate(H5P_DATASET_ACCESS));
-  check(configured && H5Pset_chunk_cache(access.get(), H5D_CHUNK_CACHE_NSLOTS_DEFAULT, 0, 1.0) >= 0, "cannot create result file");
+  const Handle access = uncached_dataset_access();
+  check(configured && access.valid(), "cannot create result file");
   const Handle links = hdf5::intermediate_group_links();
   Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links.get(),
                             create.get(), access.get()));
@@ -272,6 +293,12 @@ void ResultFile::close() {
   if (closed_) return;
   try {
     flush();
+    // Room the end of the run did not take (no failure text, a short summary).
+    for (const char* object : {"/", "/summary"}) {
+      const Handle room_holder = open_object(object);
+      if (H5Aexists(room_holder.get(), reserved_room_name) > 0)
+        check(H5Adelete(room_holder.get(), reserved_room_name) >= 0, "cannot write result file");
+    }
     // An early stop: series end where the samples do (an orderly stop leaves no unwritten rows).
     for (Series& series : series_) {
       if (series.extent == samples_written_) continue;

@@ -26,10 +26,18 @@
 //  * A series longer than its reservation (a caller that did not know the count) is
 //    extended, the data flushed, and only then is `samples_written` raised, in a flush
 //    of its own: readers trust the count, not the extent.
-//  * SWMR (H5F_ACC_SWMR_WRITE) orders HDF5's flushes, but needs the 1.10 file format,
-//    whose superblock marks the file "open for writing"; after SIGKILL every
-//    non-SWMR reader (h5py.File(path) included) then refuses it until `h5clear -s`.
-//    The 1.8-compatible format kept here opens anywhere after any stop.
+//  * Readers may open the file while the run writes it: the writer takes no HDF5 file
+//    lock (H5Pset_file_locking), and a reader finds what a SIGKILL at that moment
+//    would leave (every point tested below), whole samples up to samples_written; it
+//    reopens the file to see more. HDF5's SWMR mode (H5Fstart_swmr_write) was tried and
+//    measured for this and left out, with HDF5 1.10.8 (docs/result-file.md): its 1.10
+//    superblock keeps an "open for writing" mark after SIGKILL that locks out every
+//    non-SWMR reader until `h5clear -s`; an object header that grows in SWMR mode (the
+//    end-of-run /summary attributes, named by the case) fails the flush ("slist not
+//    empty"); and it reset the datasets' chunk caches (HDF5 issue #1730).
+//  * Everything a run rewrites (samples_written, complete, the per-series statistics)
+//    exists from the layout on and is overwritten in place; the end-of-run attributes
+//    are created in room reserved in the root's and /summary's headers.
 // An orderly end (close) shrinks every series to `samples_written`; after SIGKILL the
 // series keep their reserved length and the rows past `samples_written` are unwritten.
 //

@@ -100,6 +100,9 @@ Reader::Reader(std::string path, std::string kind) : path_(std::move(path)), kin
   if (H5Fis_hdf5(path_.c_str()) <= 0)
     throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_);
   file_ = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT));
+  // An HDF5 file written in SWMR mode whose writer still has it open, or was killed,
+  // carries the 1.10 superblock's "open for writing" mark: it opens as a SWMR reader.
+  if (!file_.valid()) file_ = Handle(H5Fopen(path_.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT));
   if (!file_.valid())
     throw hydro::DataError(path_, 0, "an HDF5 file that cannot be opened (truncated or damaged)", kind_ + ", complete");
 }

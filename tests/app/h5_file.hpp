@@ -12,7 +12,12 @@ namespace heavesim {
 
 class H5File {
  public:
-  explicit H5File(const std::string& path) { file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); }
+  /// Opens read-only; a file written in HDF5's SWMR mode and left open by a killed
+  /// writer opens as a SWMR reader.
+  explicit H5File(const std::string& path) {
+    H5E_BEGIN_TRY { file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); } H5E_END_TRY;
+    if (file_ < 0) file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
+  }
   ~H5File() {
     if (file_ >= 0) H5Fclose(file_);
   }

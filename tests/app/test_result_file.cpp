@@ -1,12 +1,14 @@
 // The result-file contract (docs/result-file.md): attributes, datasets with units and
 // descriptions, the complete flag, partial files after a signal or a numerical failure.
 #include <gtest/gtest.h>
+
 #include <hdf5.h>
 
 #include <cmath>
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <thread>
@@ -53,7 +55,27 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
   std::ifstream csv(csv_directory + "/two_link.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_NE(header.find("joints/elbow/reaction_force.x"), std::string::npos) << header;
+  // Every column "<dataset><column label> [<unit>]" carries the unit of the dataset's
+  // `units` attribute (per column where that names several).
+  EXPECT_EQ(header.substr(0, header.find(',')), "time [s]");
+  EXPECT_NE(header.find(",joints/elbow/reaction_force.x [N],"), std::string::npos) << header;
+  EXPECT_NE(header.find(",bodies/link1/velocity.wz [rad/s],bodies/link1/velocity.vx [m/s],"), std::string::npos)
+      << header;
+  std::stringstream fields(header);
+  int checked = 0;
+  for (std::string field; std::getline(fields, field, ',');) {
+    const std::size_t bracket = field.find(" [");
+    ASSERT_NE(bracket, std::string::npos) << field;
+    ASSERT_EQ(field.back(), ']') << field;
+    const std::string name = field.substr(0, bracket), unit = field.substr(bracket + 2, field.size() - bracket - 3);
+    const std::string dataset = "/" + name.substr(0, name.find_first_of(".["));
+    ASSERT_TRUE(file.exists(dataset)) << field;
+    const std::string units = file.string_attribute(dataset, "units");
+    if (units.find(',') != std::string::npos) continue;  // several units: per column, checked above
+    EXPECT_EQ(unit, units) << field;
+    ++checked;
+  }
+  EXPECT_GT(checked, 20);
   std::filesystem::remove(output);
   std::filesystem::remove_all(csv_directory);
 }
