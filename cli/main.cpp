@@ -1,13 +1,9 @@
 // heavesim command line: run, check, validate (see docs/ and README.md).
 #include <CLI/CLI.hpp>
-#include <fmt/format.h>
 
-#include <exception>
-
-#include "app/case/input_error.hpp"
+#include "cli/commands/command_support.hpp"
 #include "cli/commands/commands.hpp"
 #include "app/version.hpp"
-#include "kernel/system/ode_system.hpp"
 
 int main(int argc, char** argv) {
   using namespace heavesim;
@@ -101,7 +97,9 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
 
-  try {
+  // One mapping of errors to exit codes (2 bad input, 3 numerical failure, 1 any other),
+  // shared with the sweep's workers and the Python module.
+  return exit_code_reporting_errors([&] {
     if (*run) return run_command(run_options);
     if (*kinematics) return kinematics_command(kinematics_options);
     if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
@@ -111,16 +109,6 @@ int main(int argc, char** argv) {
     if (*stats) return stats_command(stats_options);
     if (*operability) return operability_command(operability_options);
     if (*sweep) return sweep_command(sweep_options);
-  } catch (const InputError& e) {
-    fmt::print(stderr, "heavesim: bad input: {}\n", e.what());
-    return 2;
-  } catch (const NumericalError& e) {
-    fmt::print(stderr, "heavesim: numerical failure at t = {:.6g} s: {}\n  suggestion: {}\n", e.time(), e.what(),
-               e.suggestion());
-    return 3;
-  } catch (const std::exception& e) {
-    fmt::print(stderr, "heavesim: error: {}\n", e.what());
     return 1;
-  }
-  return 1;
+  });
 }
