@@ -1,9 +1,9 @@
 #!/usr/bin/python3
 """Differences between two heavesim result files of the same case (a run against a
 tight-tolerance reference), over the samples both files have. For the drilling rig:
-the load's heave (bodies/drill_string/position z) and the hook load (the sum of the
-compensator forces on the crown block, forces/*/force of the passive and active
-compensators), plus each file's compensation efficiency. For any other case: the
+the load's heave (bodies/drill_string/position z) and the hook load (the vertical reaction
+at the top-drive/string joint, joints/td_string/reaction_force z: docs/result-file.md,
+"Design quantities"), plus each file's compensation efficiency. For any other case: the
 largest difference of every channel both files record.
 
   /usr/bin/python3 scripts/compare_runs.py reference.h5 run.h5
@@ -19,17 +19,13 @@ import numpy as np
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
 
-COMPENSATORS = ("passive_a", "passive_b", "passive", "active")
-
-
 def drilling_series(r):
     """(label, values, units) of the rig's load heave and hook load, those the file has."""
     series = []
     if "bodies/drill_string/position" in r:
         series.append(("load heave", r["bodies/drill_string/position"][:, 2], "m"))
-    forces = [r[f"forces/{name}/force"] for name in COMPENSATORS if f"forces/{name}/force" in r]
-    if forces:
-        series.append(("hook load", sum(forces), "N"))
+    if "joints/td_string/reaction_force" in r:
+        series.append(("hook load", r["joints/td_string/reaction_force"][:, 2], "N"))
     return series
 
 
