@@ -223,6 +223,14 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   if (output.forces) define_element_channels();
 
   records_energy_ = output.energy;
+  // Energy checks the integration only where nothing but gravity and joint springs does
+  // work: with force elements, drivers, limits or joint damping it changes by their work.
+  const std::vector<Joint>& joints = scene_.model->joints;
+  energy_is_conserved_ =
+      scene_.system->force_elements().empty() && definition.drivers.empty() &&
+      std::none_of(joints.begin(), joints.end(), [](const Joint& joint) {
+        return joint.limits.has_value() || (joint.spring && joint.spring->damping.cwiseAbs().maxCoeff() > 0.0);
+      });
   if (output.energy) {
     // The energies of the sample, computed once per record().
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
@@ -435,7 +443,10 @@ void Recorder::finish() {
   }
   file_->set_attribute("/", "statistics_window_start", evaluate_after());
   file_->set_attribute("/summary", "samples", samples_);
-  if (records_energy_) file_->set_attribute("/summary", "relative_energy_drift", energy_drift_);
+  // The same number under the name of what it is: a drift only where energy is conserved.
+  if (records_energy_)
+    file_->set_attribute("/summary", energy_is_conserved_ ? "relative_energy_drift" : "relative_energy_change",
+                         energy_drift_);
   compensators_.write(*file_);
   for (const JointLoad& load : joint_loads_) {
     file_->set_attribute("/summary", "peak_reaction_force_" + load.joint, load.peak);

@@ -48,6 +48,10 @@ class Recorder {
   double channel_maximum(const std::string& path) const;
   /// Largest |E(t) - E(0)| / max(|E(0)|, max kinetic energy) seen so far (energy channel only).
   double relative_energy_drift() const { return energy_drift_; }
+  /// True when only gravity and joint springs do work (no force elements, drivers, joint
+  /// limits or joint damping): then E(t) - E(0) is the integration's error. Otherwise it
+  /// is also the work of the loads, and /summary names it relative_energy_change.
+  bool energy_is_conserved() const { return energy_is_conserved_; }
   /// The load a joint carries, |reaction force| [N] (world axes, parent on child): the
   /// structural figures of a design run. For the hook (the top drive to string joint)
   /// 2 std / mean is the hook-load variation of docs/physics/drilling-rig.md §6.
@@ -106,6 +110,7 @@ class Recorder {
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
+  bool energy_is_conserved_ = false;
   struct SampleEnergy {
     double kinetic = 0.0, potential = 0.0, total = 0.0;  // J, at the last record()
   } energy_;

@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/case/case_definition.hpp"
 #include "cli/commands/commands.hpp"
@@ -128,21 +130,22 @@ int run_command(const RunOptions& options) {
                "{} samples -> {}\n",
                definition.name, solver.t_end - solver.t_start, wall, (solver.t_end - solver.t_start) / wall,
                statistics.steps, statistics.rhs_evaluations, recorder.samples(), output_path);
-    // Energy is a check of the integration only where nothing but gravity and joint
-    // springs does work: with drivers or force elements it changes by their work.
-    const std::vector<Joint>& joints = scene.model->joints;
-    const bool conservative =
-        scene.system->force_elements().empty() && definition.drivers.empty() &&
-        std::none_of(joints.begin(), joints.end(), [](const Joint& joint) {
-          return joint.limits.has_value() || (joint.spring && joint.spring->damping.cwiseAbs().maxCoeff() > 0.0);
-        });
-    if (definition.output.energy && conservative)
+    if (definition.output.energy && recorder.energy_is_conserved())
       fmt::print("  relative energy drift {:.3g}\n", recorder.relative_energy_drift());
     if (scene.model->has_constraints())
       fmt::print("  constraint drift: max |Phi| {:.3g}, max |J v| {:.3g}\n",
                  recorder.channel_maximum("/signals/constraint_residual"),
                  recorder.channel_maximum("/signals/constraint_velocity_residual"));
+    // A joint whose peak is round-off beside the largest (the free joint of a floating
+    // platform, which the water holds) carries nothing: its std / mean is noise.
+    double largest_peak = 0.0;
+    for (const Recorder::JointLoad& load : recorder.joint_loads()) largest_peak = std::max(largest_peak, load.peak);
+    std::vector<std::string> idle;
     for (const Recorder::JointLoad& load : recorder.joint_loads()) {
+      if (load.peak <= 1e-6 * largest_peak) {
+        idle.push_back(load.joint);
+        continue;
+      }
       if (load.window.count() > 1 && load.window.mean()[0] > 0.0) {
         const double mean = load.window.mean()[0], deviation = load.window.standard_deviation()[0];
         fmt::print("  reaction force at joint '{}': peak {:.6g} N; from t = {:g} s mean {:.6g} N, std {:.4g} N "
@@ -152,6 +155,8 @@ int run_command(const RunOptions& options) {
         fmt::print("  peak reaction force at joint '{}': {:.6g} N\n", load.joint, load.peak);
       }
     }
+    if (!idle.empty())
+      fmt::print("  carrying nothing (peak below 1e-6 of the largest): {}\n", fmt::join(idle, ", "));
     for (const std::string& line : recorder.compensators().headlines()) fmt::print("  {}\n", line);
   }
   return 0;
