@@ -68,15 +68,16 @@ def si(value, unit):
 
 def column_units(units, columns):
     """The unit of each column of a joint channel from its `units` attribute: one unit
-    for all ("m"), one per column ("m, rad"), or a quaternion joint's
-    "m, - (x, y, z, quaternion w, x, y, z)"."""
+    for all ("m"), one per column ("m, rad"), one per equal block of columns ("rad/s, m/s"
+    on a free joint's six speeds), or a quaternion joint's "m, - (x, y, z, quaternion w, x, y, z)"."""
     if "quaternion" in units:
         translations = 3 if units.startswith("m") else 0
         return ["m"] * translations + ["quaternion"] * (columns - translations)
     parts = [p.strip() for p in re.sub(r"\(.*\)", "", units).split(",") if p.strip()]
-    if len(parts) == columns:
-        return parts
-    return [parts[0] if parts else "-"] * columns
+    if parts and columns % len(parts) == 0:
+        # "rad/s, m/s" on a free joint's six speeds: the angular block, then the linear one.
+        return [part for part in parts for _ in range(columns // len(parts))]
+    return [units or "-"] * columns
 
 
 def rotation_vector(quaternion):
@@ -145,7 +146,7 @@ def load_sources(r):
         if f"joints/{name}/reaction_force" in r:
             sources.append((f"joint {name}", r.channel(f"joints/{name}/reaction_force"),
                             r.channel(f"joints/{name}/reaction_moment")))
-    for path in sorted(r.channels):
+    for path in sorted(channel.lstrip("/") for channel in r.channels):
         match = re.fullmatch(r"constraints/([^/]+)/reaction_force", path)
         if match:
             moment = f"constraints/{match.group(1)}/reaction_moment"
@@ -203,8 +204,13 @@ def plot_reactions(r, time, stem, out):
     for row, (title, force, moment) in enumerate(kept):
         for col, (channel, components) in enumerate(((force, ("Fx", "Fy", "Fz")), (moment, ("Mx", "My", "Mz")))):
             ax = axes[row, col]
-            if channel is None or largest(channel) == 0.0:
+            # A moment below 1e-6 of the largest force times 1 m is round-off (a revolute
+            # joint's moment about its free axis): said, not drawn.
+            if channel is None or largest(channel) <= (NOTHING * scale if col == 1 else 0.0):
                 ax.set_axis_off()
+                if channel is not None:
+                    ax.text(0.5, 0.5, f"{title}: no {'force' if col == 0 else 'moment'} (round-off)",
+                            ha="center", va="center", fontsize=8, transform=ax.transAxes)
                 continue
             draw_load(ax, time, channel, components)
             ax.set_title(f"{title}: {'force' if col == 0 else 'moment'}", fontsize=9, loc="left")
@@ -223,7 +229,8 @@ def plot_energy(r, time, stem, out):
     if "signals/total_energy" not in r:
         return None
     kinetic, potential, total = (r[f"signals/{name}"] for name in ("kinetic_energy", "potential_energy", "total_energy"))
-    working = sorted({path.split("/")[1] for path in r.channels if path.startswith(("forces/", "drivers/"))})
+    paths = [channel.lstrip("/") for channel in r.channels]
+    working = sorted({path.split("/")[1] for path in paths if path.startswith(("forces/", "drivers/"))})
     if working:
         # Nothing records the work of the force elements: K + P changes by it, and that
         # change is the loads' doing, not the integrator's.
