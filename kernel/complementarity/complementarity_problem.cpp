@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace heavesim {
 
@@ -51,6 +52,16 @@ const char* to_string(ComplementaritySolver solver) {
     case ComplementaritySolver::gauss_seidel: return "Gauss-Seidel";
   }
   return "?";
+}
+
+bool fits_workspace(ComplementarityResult& result, const char* solver, int capacity, int rows_needed, Eigen::Index z_size,
+                    int n) {
+  if (rows_needed <= capacity && z_size == n) return true;
+  result.status = ComplementarityStatus::invalid_input;
+  result.message = std::string(solver) + " workspace holds " + std::to_string(capacity) + " rows and z has " +
+                   std::to_string(z_size) + " entries; the problem needs " + std::to_string(rows_needed) + " and " +
+                   std::to_string(n);
+  return false;
 }
 
 ComplementarityResult validate(const ComplementarityProblem& problem) {

@@ -76,6 +76,12 @@ struct ComplementarityResult {
 /// friction normal indices in range and not the row itself, mu finite and >= 0.
 ComplementarityResult validate(const ComplementarityProblem& problem);
 
+/// False, with `result` made invalid_input naming the sizes, when a workspace sized for
+/// `capacity` rows cannot hold the `rows_needed` a solver needs, or z is not the problem's
+/// size n: the one check every solver makes before it touches its workspace.
+bool fits_workspace(ComplementarityResult& result, const char* solver, int capacity, int rows_needed, Eigen::Index z_size,
+                    int n);
+
 /// Fills w = M z + q (w: n entries, e.g. the head of a larger workspace vector) and sets
 /// result.residual and result.residual_absolute; allocation-free.
 void evaluate_residual(const ComplementarityProblem& problem, const VectorX& z, Eigen::Ref<VectorX> w,

@@ -73,12 +73,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
   if (!result.solved()) return result;
   const MatrixX& M = problem.M;
   const int n = problem.size();
-  if (n > ws.capacity || z.size() != n) {
-    result.status = ComplementarityStatus::invalid_input;
-    result.message = "Dantzig workspace holds " + std::to_string(ws.capacity) + " rows and z has " +
-                     std::to_string(z.size()) + " entries; the problem has " + std::to_string(n);
-    return result;
-  }
+  if (!fits_workspace(result, "Dantzig", ws.capacity, n, z.size(), n)) return result;
   const double matrix_scale = n ? M.lpNorm<Eigen::Infinity>() : 0.0;
   for (int j = 0; j < n; ++j)
     for (int i = j + 1; i < n; ++i)

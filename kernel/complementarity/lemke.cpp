@@ -163,13 +163,7 @@ ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspac
     }
   }
   const int N = n + bounded;
-  if (N > ws.capacity || z.size() != n) {
-    result.status = ComplementarityStatus::invalid_input;
-    result.message = "Lemke workspace holds " + std::to_string(ws.capacity) + " rows and z has " +
-                     std::to_string(z.size()) + " entries; the problem needs " + std::to_string(N) + " and " +
-                     std::to_string(n);
-    return result;
-  }
+  if (!fits_workspace(result, "Lemke", ws.capacity, N, z.size(), n)) return result;
   if (options.covering_vector &&
       (options.covering_vector->size() != N || !(options.covering_vector->minCoeff() > 0.0) ||
        !options.covering_vector->allFinite())) {

@@ -15,11 +15,10 @@ ComplementarityResult projected_gauss_seidel(const ComplementarityProblem& probl
   result.solver = ComplementaritySolver::projected_gauss_seidel;
   if (!result.solved()) return result;
   const int n = problem.size();
-  if (n > ws.capacity || z.size() != n || !(options.relaxation > 0.0 && options.relaxation < 2.0)) {
+  if (!fits_workspace(result, "projected Gauss-Seidel", ws.capacity, n, z.size(), n)) return result;
+  if (!(options.relaxation > 0.0 && options.relaxation < 2.0)) {
     result.status = ComplementarityStatus::invalid_input;
-    result.message = "projected Gauss-Seidel: workspace of " + std::to_string(ws.capacity) + " rows, z of " +
-                     std::to_string(z.size()) + ", problem of " + std::to_string(n) + ", relaxation " +
-                     std::to_string(options.relaxation) + " (expected in (0, 2))";
+    result.message = "projected Gauss-Seidel: relaxation " + std::to_string(options.relaxation) + ": expected in (0, 2)";
     return result;
   }
   for (int i = 0; i < n; ++i)
