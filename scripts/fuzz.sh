@@ -98,25 +98,27 @@ max_len_of() {
 }
 
 # ---------------------------------------------------------------- run
-# Where a finding happened: the finding replayed alone, and the first stack frame that is
-# not the sanitizer's, libc's or libFuzzer's. A finding inside libhdf5 (its parser of a
-# damaged file, e.g. H5HG_read on a damaged global heap) is listed but not failed on: it
-# is not this project's code, and the readers guard what they can before calling it
-# (io/hdf5/hdf5_reader.cpp). Nor is an out-of-memory or timeout that does not happen
-# when its input runs alone: memory or time accumulated over a job's many runs
-# (libhdf5's free lists keep what they allocate). Frames in the fuzz binary with no
-# source line are the sanitizer runtime's, not ours (our code is built with -g1, so its
-# frames name file:line): e.g. the memcpy/memmove/strlen interceptors that libhdf5 calls,
-# where a timeout's alarm often lands.
+# Where a finding happened: the first stack frame that is not the sanitizer's, libc's or
+# libFuzzer's. A finding inside libhdf5 (its parser of a damaged file, e.g. H5HG_read on a
+# damaged global heap) is listed but not failed on: it is not this project's code, and
+# the readers guard what they can before calling it (io/hdf5/hdf5_reader.cpp). Frames in
+# the fuzz binary with no source line are the sanitizer runtime's, not ours (our code is
+# built with -g1, so its frames name file:line): e.g. the memcpy/memmove/strlen
+# interceptors that libhdf5 calls, where a timeout's alarm often lands.
+not_ours=' in (__interceptor_|__asan|__sanitizer|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|free|operator new|abort|raise|__pthread|__libc|__mem|_start|main)|libc\.so|sysdeps|libclang_rt|/compiler-rt/|/fuzz/fuzz_[a-z_]+\+0x[0-9a-f]+\)'
+first_frames() {  # stdin: sanitizer report(s); stdout: each stack's first frame of interest
+  # (not the heap profile an out-of-memory report ends with: what was live, not where it failed)
+  awk '/^Live Heap Allocations/ { exit } /^ +#0 0x/ { stack++ } /^ +#[0-9]+ 0x/ { print stack "\t" $0 }' |
+    grep -avE "$not_ours" | awk -F'\t' '!seen[$1]++ { print $2 }'
+}
+# The finding replayed alone: its first frame of interest, or "not reproduced alone".
 where_found() {
   local binary=$1 input=$2 report
-  if report=$("$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then
+  if report=$(ASAN_OPTIONS=${ASAN_OPTIONS//:log_path=*/} "$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then
     echo "not reproduced alone"
     return
   fi
-  echo "$report" | grep -aE '^ +#[0-9]+ 0x' |
-    grep -avE ' in (__interceptor_|__asan|__sanitizer|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|free|operator new|abort|raise|__pthread|__libc|__mem|_start|main)|libc\.so|sysdeps|libclang_rt|/compiler-rt/|/fuzz/fuzz_[a-z_]+\+0x[0-9a-f]+\)' |
-    head -1
+  echo "$report" | first_frames | head -1
 }
 
 asan_options=${ASAN_OPTIONS:-detect_leaks=1}
@@ -131,8 +133,12 @@ for target in "${targets[@]}"; do
   # suppressions to see where they come from (slow; only the HDF5 targets need it).
   export ASAN_OPTIONS=$asan_options
   [[ $target == fuzz_bemio || $target == fuzz_capytaine ]] && ASAN_OPTIONS+=:fast_unwind_on_malloc=0
-  rm -rf "$dir/findings" "$dir/findings.txt"
-  mkdir -p "$dir/corpus" "$dir/findings"
+  # Every sanitizer report of the fuzzing processes, whole, one file per process: a
+  # finding that does not happen when its input runs alone (state libhdf5 kept from
+  # earlier inputs) is placed by the stacks its process reported.
+  ASAN_OPTIONS+=:log_path=$dir/reports/sanitizer
+  rm -rf "$dir/findings" "$dir/findings.txt" "$dir/reports"
+  mkdir -p "$dir/corpus" "$dir/findings" "$dir/reports"
   # Every committed finding must now be handled (each input run once).
   regressions=(fuzz/regressions/$target/*)
   regression_result="no regression inputs"
@@ -161,7 +167,9 @@ for target in "${targets[@]}"; do
   for finding in "$dir"/findings/*; do
     [[ -e "$finding" ]] || continue
     frame=$(where_found "$binary" "$finding" || true)
-    if [[ "$frame" == "not reproduced alone" && ( "$(basename "$finding")" == oom-* || "$(basename "$finding")" == timeout-* ) ]]; then
+    if [[ "$frame" == "not reproduced alone" ]]; then
+      # Placed below by its process's report (a leak or crash that needs libhdf5's state
+      # from earlier inputs); an out-of-memory or timeout accumulated over a job's runs.
       not_reproduced=$((not_reproduced + 1))
       echo "fuzz: $target: not reproduced alone: $(basename "$finding")" >>"$dir/findings.txt"
     elif [[ "$frame" == *libhdf5* ]]; then
@@ -172,9 +180,19 @@ for target in "${targets[@]}"; do
       echo "fuzz: $target: FINDING $(basename "$finding"):${frame:+${frame#*in }}" >>"$dir/findings.txt"
     fi
   done
+  # Every stack of every report the fuzzing processes wrote, replayed or not: one whose
+  # first frame of interest is not libhdf5's is this project's.
+  for report in "$dir"/reports/sanitizer.*; do
+    [[ -e "$report" ]] || continue
+    while IFS= read -r frame; do
+      [[ "$frame" == *libhdf5* ]] && continue
+      ours=$((ours + 1))
+      echo "fuzz: $target: FINDING in report $(basename "$report"):${frame#*in }" >>"$dir/findings.txt"
+    done < <(first_frames <"$report")
+  done
   line="$target: ${executions:-0} executions, ${coverage:-no coverage reported}, $ours findings"
   ((inside_hdf5 == 0)) || line+=" (+ $inside_hdf5 inside libhdf5)"
-  ((not_reproduced == 0)) || line+=" (+ $not_reproduced out-of-memory/timeouts not reproduced alone)"
+  ((not_reproduced == 0)) || line+=" (+ $not_reproduced not reproduced alone, their reports inside libhdf5)"
   line+=", $regression_result"
   if ((ours > 0)) || [[ -z "$executions" ]]; then
     line+=" -- FINDING (log: $dir/fuzz.log, inputs: $dir/findings/, where: $dir/findings.txt)"
