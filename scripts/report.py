@@ -263,8 +263,9 @@ def validation_section(binary, r, log_path):
         parts.append(f'<p id="validation-log" data-rows="{len(rows)}" data-passed="{passed}">Saved table '
                      f"{html.escape(str(log_path))}: {len(rows)} rows, {passed} PASS: <strong>{status}</strong>.</p>"
                      f"<details><summary>the table</summary><pre>{html.escape(log_path.read_text())}</pre></details>")
-    parts.append(table("validation-checks", ["id", "check"], [[text_cell(c[0]), text_cell(c[1] if len(c) > 1 else "")]
-                                                              for c in checks]))
+    parts.append("<details><summary>the checks</summary>" +
+                 table("validation-checks", ["id", "check"], [[text_cell(c[0]), text_cell(c[1] if len(c) > 1 else "")]
+                                                              for c in checks]) + "</details>")
     parts.append("</section>")
     return "".join(parts)
 
@@ -353,7 +354,7 @@ def joint_loads_section(r, stats, duration):
     joints = [name for name in r.joints if f"joints/{name}/reaction_force" in r]
     scale = max([abs(stats.get((f"/joints/{n}/reaction_force", c), {}).get(f) or 0.0)
                  for n in joints for c in range(3) for f in ("window_minimum", "window_maximum")] + [0.0])
-    rows, idle = [], []
+    rows, idle, zero = [], [], 0
     for name in joints:
         peak = max(abs(stats.get((f"/joints/{name}/reaction_force", c), {}).get(f) or 0.0)
                    for c in range(3) for f in ("window_minimum", "window_maximum"))
@@ -367,6 +368,11 @@ def joint_loads_section(r, stats, duration):
                     s = stats.get((path, c))
                     if not s:
                         continue
+                    # A component below 1e-6 of the largest force (moments: times 1 m) is
+                    # round-off or a free direction: counted, not listed (plot_run's rule).
+                    if max(abs(s.get("window_minimum") or 0.0), abs(s.get("window_maximum") or 0.0)) <= NOTHING * scale:
+                        zero += 1
+                        continue
                     mean = s.get("window_mean")
                     amplitude = None
                     if mean is not None and s.get("window_maximum") is not None:
@@ -376,6 +382,9 @@ def joint_loads_section(r, stats, duration):
                                  cell(s.get("mpm_rayleigh_duration")), cell(s.get("mpm_minimum_rayleigh_duration"))])
     note = (f"<p>Carry nothing (&lt; 1e-6 of the largest load), not listed: {html.escape(', '.join(idle))}.</p>"
             if idle else "")
+    if zero:
+        note += (f"<p>{zero} components of the joints listed are below 1e-6 of the largest load (zero by the "
+                 "joint's kind and the loading, or round-off) and are not listed.</p>")
     return ("<section><h2>Joint design loads</h2><p>The wrench the parent passes to the child at the joint origin "
             "(docs/result-file.md, \"What a joint reaction is\"), in the joint frame and in world axes; dynamic "
             f"amplitude = largest departure from the window mean; MPM over D = {duration:g} s (Rayleigh, maximum and "
