@@ -325,10 +325,12 @@ def compensator_section(r, case, stats, directory):
               ("stroke_max_m", "m"), ("end_stop_events_lower", "count"), ("end_stop_events_upper", "count"),
               ("end_stop_max_penetration_m", "m"), ("gas_pressure_min_Pa", "Pa"), ("gas_pressure_max_Pa", "Pa"),
               ("force_max_abs_N", "N"), ("control_error_max_abs_m", "m")]
-    rows = [[f"<th>{html.escape(name)}</th>"] + [cell(summary.get(f"{name}_{field}")) for field, _ in fields]
-            for name, _ in found]
+    # One row per /summary headline <name>_<field>, one column per compensator.
+    rows = [[f"<th>{html.escape(field)}</th>", text_cell(unit)] + [cell(summary.get(f"{name}_{field}"))
+                                                                  for name, _ in found]
+            for field, unit in fields if any(f"{name}_{field}" in summary for name, _ in found)]
     parts = ["<section><h2>Compensators: efficiency and stroke envelope</h2>",
-             table("compensators", ["compensator"] + [f"{f} [{u}]" for f, u in fields], rows,
+             table("compensators", ["/summary headline", "unit"] + [name for name, _ in found], rows,
                    "η = 1 − σ(z_load)/σ(z_base) over the evaluation window; stroke from mid-stroke, + rods out")]
     strokes = [name for name, _ in found if f"forces/{name}/stroke" in r]
     if strokes:

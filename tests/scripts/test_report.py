@@ -225,8 +225,9 @@ class DrillingPageInChromium(unittest.TestCase):
         summary = {r[0][0]: r[1][0] for r in rows_of(self.dom, "case-summary")}
         self.assertEqual(summary["case SHA-256 (resolved YAML)"], sha)
         self.assertEqual(summary["complete"], "yes")
+        self.assertEqual(self.dom.tables["compensators"][0][2][0], "passive")
         compensator = {r[0][0]: r for r in rows_of(self.dom, "compensators")}
-        self.assertEqual(float(compensator["passive"][1][1]), efficiency)
+        self.assertEqual(float(compensator["efficiency"][2][1]), efficiency)
         self.assertEqual([r[0][0] for r in rows_of(self.dom, "model-joints")],
                          ["platform_motion", "compensator", "crown_tb", "tb_td", "td_string"])
         self.assertIsNone(self.dom.incomplete)
