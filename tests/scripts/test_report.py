@@ -233,6 +233,34 @@ class DrillingPageInChromium(unittest.TestCase):
         self.assertIsNone(self.dom.incomplete)
 
 
+    def test_window_and_duration_asked_for(self):
+        # --from and --duration reach every statistic: the hook load's Rayleigh MPM over
+        # D = 1 h from t = 30 s against the closed form mean + std sqrt(2 ln(D / Tz)), with
+        # Tz = window duration / mean up-crossings counted here (docs/physics/statistics.md §2, §4).
+        page = os.path.join(self.directory.name, "window.html")
+        made = heavesim("report", self.result, "-o", page, "--from", "30", "--duration", "3600")
+        self.assertEqual(made.returncode, 0, made.stderr)
+        parsed = Tables()
+        with open(page, encoding="utf-8") as text:
+            parsed.feed(text.read())
+        with h5py.File(self.result) as f:
+            n = f.attrs["samples_written"]
+            time = f["time"][:n]
+            hook = f["joints/td_string/reaction_force"][:n, 2][time >= 30.0 - 1e-9]
+            window_time = time[time >= 30.0 - 1e-9]
+        mean, std = hook.mean(), hook.std(ddof=1)
+        upcrossings = np.count_nonzero((hook[:-1] < mean) & (hook[1:] >= mean))
+        tz = (window_time[-1] - window_time[0]) / upcrossings
+        expected = mean + std * np.sqrt(2.0 * np.log(3600.0 / tz))
+        row = next(r for r in rows_of(parsed, "design-quantities") if r[0][0] == "hook load")
+        self.assertAlmostEqual(float(row[3][1]) / mean, 1.0, delta=1e-12)
+        # The std's 1e-9 (see above) scaled by sqrt(2 ln N) ~ 5 over a 1.6 MN mean.
+        self.assertAlmostEqual(float(row[7][1]), expected, delta=1e-9 * std * 5)
+        summary = {r[0][0]: r[1][0] for r in rows_of(parsed, "case-summary")}
+        self.assertEqual(summary["evaluation window start [s]"], "30")
+        self.assertEqual(summary["MPM duration D [s]"], "3600")
+
+
 class IncompleteRunHasABanner(unittest.TestCase):
     def test_failed_run(self):
         with tempfile.TemporaryDirectory() as d:
