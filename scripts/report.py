@@ -38,7 +38,13 @@ import yaml
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE.parent))
 sys.path.insert(0, str(HERE))
-import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
+try:
+    import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
+except ImportError:
+    # A build without the compiled module (the sanitizer build): reading needs only the
+    # package's Python files (docs/python.md), which the source tree has.
+    sys.path.insert(0, str(HERE.parent / "python"))
+    import heavesim  # noqa: E402
 import plot_reaction_envelope  # noqa: E402  the figures: one copy of the plotting rules
 import plot_run  # noqa: E402
 from plot_run import NOTHING, engineering_scale  # noqa: E402
