@@ -263,8 +263,12 @@ def validation_section(binary, r, log_path):
              "(docs/validation.md); run them with <code>heavesim validate</code> (a PASS/FAIL table; exit 0 only "
              "when every row passes) and pass its output with <code>--validation LOG</code> to have it here.</p>"]
     if log_path:
-        rows = [line for line in log_path.read_text().splitlines() if re.search(r"\s(PASS|FAIL)\s*$", line)]
-        passed = sum(line.rstrip().endswith("PASS") for line in rows)
+        # A row starts with a check's id and ends with PASS or FAIL ("FAIL (why)" for a check
+        # that did not run); the closing "N validation rows FAIL" line is not a row.
+        ids = {check[0] for check in checks}
+        rows = [line for line in log_path.read_text().splitlines()
+                if line.split()[:1] and line.split()[0] in ids and re.search(r"\s(PASS|FAIL)(\s*$|\s+\()", line)]
+        passed = sum(bool(re.search(r"\sPASS\s*$", line)) for line in rows)
         status = "all PASS" if rows and passed == len(rows) else f"{len(rows) - passed} FAIL"
         parts.append(f'<p id="validation-log" data-rows="{len(rows)}" data-passed="{passed}">Saved table '
                      f"{html.escape(str(log_path))}: {len(rows)} rows, {passed} PASS: <strong>{status}</strong>.</p>"

@@ -261,6 +261,25 @@ class DrillingPageInChromium(unittest.TestCase):
         self.assertEqual(summary["MPM duration D [s]"], "3600")
 
 
+    def test_saved_validation_table_is_counted(self):
+        # Three rows in `heavesim validate`'s format, one failing, around its other lines.
+        log = os.path.join(self.directory.name, "validate.log")
+        with open(log, "w") as out:
+            out.write("id   case   quantity   max error  tolerance  result\n"
+                      "K1   double pendulum   qdd by ABA, relative   1.01e-14      1e-12  PASS\n"
+                      "K1   double pendulum   pin 1 reaction force   1.31e-14      1e-12  PASS\n"
+                      "     (0.12 s)\n"
+                      "C1   compensator   efficiency T = 8 s   7.00e-03      5e-03  FAIL\n"
+                      "1 validation rows FAIL\n")
+        page = os.path.join(self.directory.name, "validated.html")
+        made = heavesim("report", self.result, "-o", page, "--validation", log)
+        self.assertEqual(made.returncode, 0, made.stderr)
+        with open(page, encoding="utf-8") as text:
+            source = text.read()
+        self.assertTrue('id="validation-log" data-rows="3" data-passed="2"' in source, "row counts")
+        self.assertTrue("<strong>1 FAIL</strong>" in source, "the FAIL count")
+
+
 class IncompleteRunHasABanner(unittest.TestCase):
     def test_failed_run(self):
         with tempfile.TemporaryDirectory() as d:
@@ -304,6 +323,10 @@ class BadFiles(unittest.TestCase):
     def test_hdf5_that_is_not_a_result(self):
         self.assert_refused("tests/bad_results/not_a_result.h5", "tests/bad_results/not_a_result.h5: /: found an HDF5 "
                             "file without the root attribute heavesim_version")
+
+    def test_validation_log_missing(self):
+        self.assert_refused("tests/bad_results/not_a_result.h5", "tests/bad_results/no_such.log: found no such file",
+                            "--validation", "tests/bad_results/no_such.log")
 
     def test_duration_not_positive(self):
         self.assert_refused("tests/bad_results/not_a_result.h5", "--duration: found -1.0", "--duration", "-1")
