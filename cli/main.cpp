@@ -80,6 +80,14 @@ int main(int argc, char** argv) {
   operability->add_option("-o,--output", operability_options.output_directory, "directory of operability.csv/.json/.png");
   operability->add_flag("--json", operability_options.json, "print the JSON summary instead of the table");
 
+  ReportOptions report_options;
+  CLI::App* report = app.add_subcommand("report", "one self-contained HTML report of a result file (docs/report.md)");
+  report->add_option("result", report_options.result_path, "result file (HDF5)")->required();
+  report->add_option("-o,--output", report_options.output_path, "HTML file (default <result stem>_report.html)");
+  report->add_option("--duration", report_options.duration, "s, duration of the most probable maxima (default 10800 = 3 h)");
+  report->add_option("--from", report_options.from, "s, start of the evaluation window (default the file's own)");
+  report->add_option("--validation", report_options.validation_log, "a saved `heavesim validate` output to include");
+
   SweepOptions sweep_options;
   CLI::App* sweep = app.add_subcommand("sweep", "run a design matrix or a scatter diagram of cases (docs/sweeps.md)");
   sweep->add_option("sweep", sweep_options.sweep_path, "sweep file (YAML)")->required();
@@ -108,6 +116,7 @@ int main(int argc, char** argv) {
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
     if (*stats) return stats_command(stats_options);
     if (*operability) return operability_command(operability_options);
+    if (*report) return report_command(report_options);
     if (*sweep) return sweep_command(sweep_options);
     return 1;
   });

@@ -5,7 +5,8 @@
 #   results/drilling_{joints,reactions,energy}.png        time histories
 #   results/drilling_reaction_envelope.{png,csv}          per-joint reaction envelope (structural loads)
 #   results/efficiency_vs_period.{png,csv}                locked / passive / passive + active on waves (C3), T = 6..16 s
-#   scripts/main.sh [case.yaml]     (another case: its run, histories and envelope only)
+#   results/drilling_report.html                          the report: one self-contained page (docs/report.md)
+#   scripts/main.sh [case.yaml]     (another case: its run, histories, envelope and report only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
@@ -23,3 +24,4 @@ if [[ $# -eq 0 ]]; then
 else
   /usr/bin/python3 scripts/plot_reaction_envelope.py "results/$name.h5" -o results
 fi
+build/heavesim report "results/$name.h5" -o "results/${name}_report.html"

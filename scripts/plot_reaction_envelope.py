@@ -48,27 +48,21 @@ def envelopes(r, start, skip):
     return rows
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("result")
-    parser.add_argument("-o", "--output", default="results")
-    parser.add_argument("--from", dest="start", type=float, default=-math.inf, help="window start [s]")
-    parser.add_argument("--skip", nargs="*", default=[], help="joints to leave out")
-    args = parser.parse_args()
-    stem = os.path.splitext(os.path.basename(args.result))[0]
-    os.makedirs(args.output, exist_ok=True)
-    with heavesim.open(args.result) as r:
-        every = envelopes(r, args.start, set(args.skip))
+def plot_envelope(r, out, stem, start=-math.inf, skip=()):
+    """Writes <out>/<stem>_reaction_envelope.png and .csv for the open result `r` (a
+    heavesim.Result); returns (png path, csv path), or None when no joint reaction is
+    recorded. `start`: window start [s]; `skip`: joint names to leave out."""
+    every = envelopes(r, start, set(skip))
     if not every:
-        raise SystemExit(f"{args.result}: no joint reactions recorded (output.channels must include reactions)")
+        return None
     scale = max(np.abs(np.concatenate([low[:3], high[:3]])).max() for _, low, _, high in every)
     rows = [row for row in every if np.abs(np.concatenate([row[1][:3], row[3][:3]])).max() > NOTHING * scale]
     idle = sorted({row[0] for row in every} - {row[0] for row in rows})
 
-    csv_path = os.path.join(args.output, f"{stem}_reaction_envelope.csv")
+    csv_path = os.path.join(out, f"{stem}_reaction_envelope.csv")
     units = ["N"] * 3 + ["N m"] * 3
-    with open(csv_path, "w", newline="") as out:
-        writer = csv.writer(out)
+    with open(csv_path, "w", newline="") as table:
+        writer = csv.writer(table)
         writer.writerow(["joint"] + [f"{c}_{end} [{u}]" for c, u in zip(COMPONENTS, units) for end in ("min", "mean", "max")])
         for name, low, mean, high in every:
             writer.writerow([name] + [f"{v:.6e}" for triple in zip(low, mean, high) for v in triple])
@@ -96,15 +90,32 @@ def main():
         ax.grid(True, axis="y", alpha=0.3)
     for ax in list(axes.flat)[len(rows):]:
         ax.axis("off")
-    window = "" if math.isinf(args.start) else f", t >= {args.start:g} s"
+    window = "" if math.isinf(start) else f", t >= {start:g} s"
     title = f"{stem}: joint reaction envelopes, joint frames: min to max about the mean (mean under each name){window}"
     if idle:
         title += "\ncarry nothing (< 1e-6 of the largest load), not drawn: " + ", ".join(idle)
     fig.suptitle(title, fontsize=10)
     fig.tight_layout()
-    png_path = os.path.join(args.output, f"{stem}_reaction_envelope.png")
+    png_path = os.path.join(out, f"{stem}_reaction_envelope.png")
     fig.savefig(png_path, dpi=110)
-    print(f"wrote {png_path} and {csv_path}")
+    plt.close(fig)
+    return png_path, csv_path
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("result")
+    parser.add_argument("-o", "--output", default="results")
+    parser.add_argument("--from", dest="start", type=float, default=-math.inf, help="window start [s]")
+    parser.add_argument("--skip", nargs="*", default=[], help="joints to leave out")
+    args = parser.parse_args()
+    stem = os.path.splitext(os.path.basename(args.result))[0]
+    os.makedirs(args.output, exist_ok=True)
+    with heavesim.open(args.result) as r:
+        written = plot_envelope(r, args.output, stem, args.start, args.skip)
+    if written is None:
+        raise SystemExit(f"{args.result}: no joint reactions recorded (output.channels must include reactions)")
+    print(f"wrote {written[0]} and {written[1]}")
 
 
 if __name__ == "__main__":

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages heavesim needs, if they are missing.
-#   scripts/setup.sh           build, test and plotting dependencies
+#   scripts/setup.sh           build, test, plotting and report dependencies (Chromium for its test)
 #   scripts/setup.sh --peers   also MuJoCo and DART, for the side-by-side benchmarks
 set -euo pipefail
 
@@ -12,6 +12,8 @@ packages=(
   python3-numpy python3-scipy python3-h5py python3-matplotlib
   libopenmpi-dev openmpi-bin   # heavesim sweep across MPI ranks (mpirun)
   pybind11-dev python3-dev     # the heavesim Python package
+  python3-yaml                 # heavesim report reads the resolved case (scripts/report.py)
+  chromium fonts-dejavu-core   # the report's headless-browser test (CTest Report.*)
 )
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(libmujoco-dev libqhull-dev libdart-dev libbullet-dev libsiconos-numerics-dev)

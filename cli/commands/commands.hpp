@@ -56,6 +56,16 @@ struct OperabilityOptions {
 };
 /// heavesim operability: runs scripts/operability.py (docs/operability.md); its exit code.
 int operability_command(const OperabilityOptions& options);
+
+struct ReportOptions {
+  std::string result_path;        // the result file (HDF5)
+  std::string output_path;        // -o: default <result stem>_report.html beside it
+  double duration = 10800.0;      // s, D of the most probable maxima (3 h, the MPM duration)
+  std::optional<double> from;     // s, window start; default the file's statistics_window_start
+  std::string validation_log;     // --validation: a saved `heavesim validate` output to include
+};
+/// heavesim report: runs scripts/report.py (docs/report.md); its exit code.
+int report_command(const ReportOptions& options);
 struct SweepOptions {
   std::string sweep_path;
   std::string output_directory;  // default results/<sweep file stem>
