@@ -127,6 +127,7 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   if (channel.column_units.empty()) channel.column_units.assign(width, channel.units);
+  if (row_.size() < static_cast<std::size_t>(width)) row_.resize(width);  // sized once, here
   channel.statistics = RunningStatistics(width);
   // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
   // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
@@ -201,20 +202,22 @@ void Recorder::define_channels(const CaseDefinition& definition) {
     }
     if (output.reactions) {
       needs_reactions_ = true;
+      const std::size_t k = reaction_joints_.size();  // this joint's entry of reactions_
       reaction_joints_.push_back(i);
+      reactions_.emplace_back();
       joint_loads_.push_back({joint.name, 0.0, RunningStatistics(1)});
       add({base + "/reaction_force", 3, "N",
            "force exerted by the parent on the child at the joint origin, world axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).force_world; }});
+           [this, k](double, double* out) { map3(out) = reactions_[k].force_world; }});
       add({base + "/reaction_moment", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, world axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).moment_world; }});
+           [this, k](double, double* out) { map3(out) = reactions_[k].moment_world; }});
       add({base + "/reaction_force_joint", 3, "N",
            "force exerted by the parent on the child, joint (child-side) axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).force_joint; }});
+           [this, k](double, double* out) { map3(out) = reactions_[k].force_joint; }});
       add({base + "/reaction_moment_joint", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, joint (child-side) axes", xyz,
-           [&system, i](double, double* out) { map3(out) = joint_reaction(system.model(), system.data(), i).moment_joint; }});
+           [this, k](double, double* out) { map3(out) = reactions_[k].moment_joint; }});
     }
   }
 
@@ -369,7 +372,9 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
   }
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
-    const double load = joint_reaction(system.model(), system.data(), reaction_joints_[k]).force_world.norm();
+    // Once a sample: the four reaction channels and the load read it.
+    reactions_[k] = joint_reaction(system.model(), system.data(), reaction_joints_[k]);
+    const double load = reactions_[k].force_world.norm();
     joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
     if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
@@ -377,13 +382,13 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   csv_row_.clear();
   const bool in_window = compensators_.in_window(t);
   for (Channel& channel : channels_) {
-    row_.resize(std::max(channel.columns, 1));
-    channel.fill(t, row_.data());
-    channel.statistics.add(row_.data());
+    // Filled in place, in the file's block of samples (or the scratch row): no copy.
+    double* row = file_ ? file_->sample_row(channel.series) : row_.data();
+    channel.fill(t, row);
+    channel.statistics.add(row);
     if (in_window)
-      for (std::size_t c = 0; c < channel.response.size(); ++c) channel.response[c].add(row_[c]);
-    if (file_) file_->append(channel.series, row_.data());
-    if (csv_) csv_row_.insert(csv_row_.end(), row_.begin(), row_.end());
+      for (std::size_t c = 0; c < channel.response.size(); ++c) channel.response[c].add(row[c]);
+    if (csv_) csv_row_.insert(csv_row_.end(), row, row + std::max(channel.columns, 1));
   }
   if (file_) file_->end_sample();
   if (csv_) csv_->write_row(csv_row_);

@@ -12,6 +12,7 @@
 #include "app/output/result_file.hpp"
 #include "app/output/running_statistics.hpp"
 #include "app/scene/scene.hpp"
+#include "kernel/algorithms/joint_reactions.hpp"
 #include "signal/response_statistics.hpp"
 
 namespace heavesim {
@@ -116,6 +117,7 @@ class Recorder {
   } energy_;
   std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
+  std::vector<JointReaction> reactions_;  // of reaction_joints_, at the sample being recorded
   std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample
   CompensatorSummary compensators_;
 };

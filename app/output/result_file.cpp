@@ -195,7 +195,7 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t initial[2] = {reserved_samples_, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
-  const hsize_t chunk[2] = {chunk_rows, static_cast<hsize_t>(std::max(columns, 1))};
+  const hsize_t chunk[2] = {block_rows, static_cast<hsize_t>(std::max(columns, 1))};
   const Handle space(H5Screate_simple(rank, initial, maximum));
   const Handle create(H5Pcreate(H5P_DATASET_CREATE));
   // Chunks allocated now and never filled: see the header (no structural change later).
@@ -211,7 +211,9 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   Series series;
   series.dataset = std::move(dataset);
   series.columns = columns;
+  series.width = static_cast<hsize_t>(std::max(columns, 1));
   series.extent = reserved_samples_;
+  series.buffer.assign(block_rows * series.width, 0.0);
   series_.push_back(std::move(series));
   set_attribute(dataset_path, "units", units);
   set_attribute(dataset_path, "description", description);
@@ -223,21 +225,21 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
 }
 
 void ResultFile::append(int series_id, const double* row) {
-  Series& series = series_[series_id];
-  const int width = std::max(series.columns, 1);
-  series.buffer.insert(series.buffer.end(), row, row + width);
+  std::copy_n(row, series_[series_id].width, sample_row(series_id));
 }
 
 void ResultFile::end_sample() {
-  if (++buffered_samples_ >= chunk_rows) flush();
+  if (++buffered_samples_ < block_rows) return;
+  write_block(block_rows);
+  const double since_commit =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - last_commit_).count();
+  // The first block at once: a reader (and a run stopped early) has samples from the start.
+  if (samples_written_ == 0 || extended_since_commit_ || since_commit >= commit_interval_s) commit();
 }
 
 bool ResultFile::write_rows(Series& series, hsize_t rows) {
-  const int width = std::max(series.columns, 1);
-  if (series.buffer.size() < rows * width)
-    throw std::logic_error("ResultFile: a series has fewer rows than the samples ended: " + path_);
   const int rank = series.columns == 0 ? 1 : 2;
-  const hsize_t first = samples_written_;
+  const hsize_t first = rows_on_disk_;
   bool extended = false;
   if (first + rows > series.extent) {
     const hsize_t new_size[2] = {first + rows, static_cast<hsize_t>(series.columns)};
@@ -255,28 +257,39 @@ bool ResultFile::write_rows(Series& series, hsize_t rows) {
   check(H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
                  series.buffer.data()) >= 0,
         "cannot write result file");
-  // Rows of a sample still being appended stay for the next flush.
-  series.buffer.erase(series.buffer.begin(), series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * width));
   return extended;
+}
+
+void ResultFile::write_block(hsize_t rows) {
+  for (Series& series : series_) {
+    extended_since_commit_ = write_rows(series, rows) || extended_since_commit_;
+    // The row of a sample still being built (a flush between its appends) leads the next block.
+    if (rows < block_rows)
+      std::copy_n(series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * series.width), series.width,
+                  series.buffer.begin());
+  }
+  rows_on_disk_ += rows;
+  buffered_samples_ = 0;
+}
+
+void ResultFile::commit() {
+  if (rows_on_disk_ != samples_written_) {
+    if (extended_since_commit_) flush_file();
+    set_attribute("/", samples_written_name, static_cast<long>(rows_on_disk_));
+    samples_written_ = rows_on_disk_;
+    extended_since_commit_ = false;
+  }
+  flush_file();
+  last_commit_ = std::chrono::steady_clock::now();
+  if (!published_) publish();
 }
 
 void ResultFile::flush_file() { check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "cannot write result file"); }
 
 void ResultFile::flush() {
   check_usable();
-  const hsize_t rows = buffered_samples_;
-  if (rows > 0) {
-    bool extended = false;
-    for (Series& series : series_) extended = write_rows(series, rows) || extended;
-    // Grown datasets: their new extents reach the disk before the count that trusts them.
-    if (extended) flush_file();
-    buffered_samples_ = 0;
-    const long written = static_cast<long>(samples_written_ + rows);
-    set_attribute("/", samples_written_name, written);
-    samples_written_ += rows;
-  }
-  flush_file();
-  if (!published_) publish();
+  if (buffered_samples_ > 0) write_block(buffered_samples_);
+  commit();
 }
 
 void ResultFile::publish() {

@@ -43,6 +43,7 @@
 //
 // Every HDF5 call is checked: a failure throws OutputError naming the file and the
 // system's cause, and the file is then left as the last complete flush wrote it.
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -87,14 +88,26 @@ class ResultFile {
   /// Returns its id for append(); `units` and `description` become attributes.
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
-  /// Appends one row (max(columns, 1) values) to the series' in-memory buffer.
+  /// The series' row of the sample being built (max(columns, 1) values) in its block of
+  /// samples, sized once: a writer fills it in place (the recorder's channels do), then
+  /// calls end_sample(). Valid until the next end_sample() or flush().
+  double* sample_row(int series) { return series_[series].buffer.data() + buffered_samples_ * series_[series].width; }
+  /// Copies one row (max(columns, 1) values) into sample_row(series).
   void append(int series, const double* row);
-  /// Ends one sample (a row appended to every series). The buffers go to disk only here,
-  /// once a chunk of samples has accumulated.
+  /// Ends one sample (a row filled in every series). The rows go to disk only here, a
+  /// block of `block_rows` samples at a time, one write a series; `samples_written` is
+  /// raised (a commit: the count, then a file flush) after a block only when it is the
+  /// first, when `commit_interval_s` of wall time has passed since the last commit, or
+  /// when a series had to be extended (a structural change, committed at once): the flush, not the data, is
+  /// what costs, and a reader needs whole samples, not every block, as they come.
   void end_sample();
   /// Writes the whole samples buffered, then `samples_written`, and flushes the file to
   /// disk; the first flush publishes the file under its name.
   void flush();
+  /// Samples a block holds (one chunk of every series: a block write fills whole chunks).
+  static constexpr hsize_t block_rows = 1024;
+  /// Wall time between two commits while the run writes blocks [s].
+  static constexpr double commit_interval_s = 0.25;
   /// Flushes, shrinks every series to `samples_written`, closes everything and checks
   /// that it closed (a failure at close is a failed write).
   void close();
@@ -103,8 +116,9 @@ class ResultFile {
   struct Series {
     hdf5::Handle dataset;
     int columns = 0;
+    hsize_t width = 1;   // values a row: max(columns, 1)
     hsize_t extent = 0;  // rows the dataset has (reserved or grown)
-    std::vector<double> buffer;
+    std::vector<double> buffer;  // block_rows rows, row-major, sized once
   };
   /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
   hdf5::Handle open_object(const std::string& object_path);
@@ -112,8 +126,15 @@ class ResultFile {
   /// the same type and shape (no allocation), else creating it.
   void write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
                        const void* data);
-  /// Rows [first, first + rows) of a series from its buffer; extends the dataset if needed.
+  /// Rows [rows_on_disk_, rows_on_disk_ + rows) of a series from its buffer; extends the
+  /// dataset if needed (and says so).
   bool write_rows(Series& series, hsize_t rows);
+  /// The first `rows` buffered samples of every series to disk; a sample still being
+  /// built moves to the start of the block.
+  void write_block(hsize_t rows);
+  /// `samples_written` = the rows on disk, then a file flush (after one first if a series
+  /// grew: the extents reach the disk before the count that trusts them); publishes.
+  void commit();
   void flush_file();
   void publish();
   /// Records the failure (the file is not written again) and throws it.
@@ -128,12 +149,14 @@ class ResultFile {
   hsize_t reserved_samples_ = 0;
   hdf5::Handle file_;
   std::vector<Series> series_;
-  hsize_t buffered_samples_ = 0;  // samples appended since the last flush
-  hsize_t samples_written_ = 0;
+  hsize_t buffered_samples_ = 0;  // whole samples in the block (not yet on disk)
+  hsize_t rows_on_disk_ = 0;      // rows written to every series (>= samples_written_)
+  hsize_t samples_written_ = 0;   // rows committed (the root attribute)
+  bool extended_since_commit_ = false;
+  std::chrono::steady_clock::time_point last_commit_ = std::chrono::steady_clock::now();
   bool published_ = false, closed_ = false;
   std::string failure_;  // the OutputError's message once a write has failed
   std::string failure_cause_;
-  static constexpr hsize_t chunk_rows = 1024;
 };
 
 }  // namespace heavesim
