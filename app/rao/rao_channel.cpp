@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <regex>
+#include <stdexcept>
 
 #include <Eigen/Geometry>
 #include <fmt/format.h>

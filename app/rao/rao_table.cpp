@@ -91,7 +91,7 @@ void write_rao_table(const std::string& directory, const RaoTable& table) {
     file.attribute(group, "name", column.name);
   }
   if (!table.bem_frequencies.empty())
-    file.numbers("/bem_frequency", table.bem_frequencies, 1, "rad/s", "frequencies of the frequency-domain RAO line");
+    file.numbers("/bem_frequency", table.bem_frequencies, 1, "rad/s", "frequencies of the frequency-domain RAO line: the BEM frequencies and 7 between each pair");
   file.close();
 
   const std::string csv_path = (std::filesystem::path(directory) / "rao.csv").string();

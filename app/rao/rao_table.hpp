@@ -17,7 +17,7 @@ struct RaoColumn {
   std::vector<std::complex<double>> values;     // per row
   std::vector<double> coherence;                // per row (H1 only; empty for the regular sweep)
   std::vector<std::complex<double>> reference;  // frequency-domain RAO per row (modes with BEM data; else empty)
-  std::vector<std::complex<double>> reference_on_bem;  // the same on RaoTable::bem_frequencies
+  std::vector<std::complex<double>> reference_on_bem;  // the same on RaoTable::bem_frequencies (the figure's line)
 };
 
 struct RaoTable {
@@ -30,7 +30,7 @@ struct RaoTable {
   std::string reference_note;          // why there is no frequency-domain RAO ("" when there is)
   std::vector<double> angular_frequencies;  // rad/s, per row
   std::vector<RaoColumn> columns;
-  std::vector<double> bem_frequencies;      // rad/s
+  std::vector<double> bem_frequencies;      // rad/s: the BEM frequencies and 7 between each pair
   std::vector<std::string> notes;           // per row, e.g. the run file or why a row is empty
 };
 

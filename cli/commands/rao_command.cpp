@@ -168,7 +168,12 @@ void add_reference(RaoTable& table, const std::vector<RaoChannel>& channels, con
   const std::optional<FrequencyDomainReference> reference =
       FrequencyDomainReference::of_case(definition, table.reference_note);
   if (!reference) return;
-  table.bem_frequencies = reference->bem_frequencies();
+  // The line: the BEM frequencies and 7 between each pair, so that it follows what the
+  // interpolated coefficients give between them (the points' own reference) rather than
+  // drawing chords across the wide gaps of a BEM grid.
+  const std::vector<double>& bem = reference->bem_frequencies();
+  for (std::size_t n = 0; n < bem.size(); ++n)
+    for (int k = 0; k < (n + 1 < bem.size() ? 8 : 1); ++k) table.bem_frequencies.push_back(bem[n] + (n + 1 < bem.size() ? k * (bem[n + 1] - bem[n]) / 8 : 0.0));
   std::vector<hydro::ComplexVector6> rows, line;
   for (double w : table.angular_frequencies) rows.push_back(reference->rao(w));
   for (double w : table.bem_frequencies) line.push_back(reference->rao(w));
@@ -251,7 +256,7 @@ int finish(const RaoOptions& options, const std::string& directory, const RaoTab
   if (!options.quiet) {
     print_comparison(table);
     if (!table.reference_note.empty()) fmt::print("  no frequency-domain RAO: {}\n", table.reference_note);
-    fmt::print("wrote {0}/rao.h5, {0}/rao.csv{1}\n", directory, options.plot ? fmt::format(", {}/rao.png", directory) : "");
+    fmt::print("wrote {0}/rao.h5, {0}/rao.csv\n", directory);  // scripts/plot_rao.py says where the figure went
   }
   if (options.plot) {
     const int plotted = draw_figure(directory);

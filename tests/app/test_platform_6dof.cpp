@@ -390,7 +390,8 @@ TEST(Platform6Dof, RaoCommandRegularSweepMatchesTheFrequencyDomainRao) {
   const std::vector<double>& frequencies = rows["heave"].frequencies;
   ASSERT_EQ(frequencies.size(), 4u);
   for (std::size_t r = 0; r < frequencies.size(); ++r) {
-    EXPECT_NEAR(frequencies[r], 2 * M_PI / std::vector<double>{8, 10, 12, 15}[r], 1e-12);
+    const double periods[] = {8, 10, 12, 15};
+    EXPECT_NEAR(frequencies[r], 2 * M_PI / periods[r], 1e-12);
     const hydro::ComplexVector6 rao = reference_rao(frequencies[r], M_PI, definition);
     const double largest_translation = std::max({std::abs(rao[0]), std::abs(rao[2]), 0.05});
     for (const auto& [name, mode] : {std::pair{"surge", 0}, std::pair{"heave", 2}, std::pair{"pitch", 4}}) {
