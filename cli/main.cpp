@@ -99,6 +99,21 @@ int main(int argc, char** argv) {
                   "skip runs whose result file is complete with the same hash (default), or rerun all");
   sweep->add_flag("-q,--quiet", sweep_options.quiet, "no progress line and no summary");
 
+  RaoOptions rao_options;
+  CLI::App* rao = app.add_subcommand("rao", "RAOs per unit wave amplitude: a regular-wave sweep of a case, or H1 from an irregular run (docs/rao.md)");
+  rao->add_option("input", rao_options.input, "case file (YAML): a period sweep; or result file (HDF5): H1 from its sea")->required();
+  rao->add_option("--periods", rao_options.periods, "s, the sweep's periods: A:STEP:B or T1,T2,...");
+  rao->add_option("--amplitude", rao_options.amplitude, "m, the sweep's wave amplitude (default 1)");
+  rao->add_option("--channel", rao_options.channels, "surge .. yaw, /bodies/<body>/point(x, y, z)[c] or a result path[column] (repeatable; default the six platform modes)")
+      ->allow_extra_args(false);
+  rao->add_option("--set", rao_options.overrides, "override a case value: key.path=value (repeatable)")->allow_extra_args(false);
+  rao->add_option("--case", rao_options.case_path, "result file only: its case (default the file's case_file)");
+  rao->add_option("--segment", rao_options.segment, "s, result file only: the Welch segment of H1 (default about 1/8 of the window)");
+  rao->add_option("-j,--jobs", rao_options.jobs, "runs at once on this machine (worker processes)")->check(CLI::Range(1, 1024));
+  rao->add_option("-o,--output", rao_options.output_directory, "directory of rao.h5, rao.csv, rao.png and the runs (default results/<input name>_rao)");
+  rao->add_flag("!--no-plot", rao_options.plot, "no figure (rao.png)");
+  rao->add_flag("-q,--quiet", rao_options.quiet, "no progress line and no table");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -118,6 +133,7 @@ int main(int argc, char** argv) {
     if (*operability) return operability_command(operability_options);
     if (*report) return report_command(report_options);
     if (*sweep) return sweep_command(sweep_options);
+    if (*rao) return rao_command(rao_options);
     return 1;
   });
 }

@@ -14,9 +14,9 @@
 #include <fmt/format.h>
 
 #include "app/output/output_error.hpp"
+#include "app/output/table_file.hpp"
 #include "app/output/utc_now.hpp"
 #include "app/version.hpp"
-#include "io/hdf5/hdf5_handle.hpp"
 #include "signal/statistic_fields.hpp"
 
 namespace heavesim {
@@ -62,69 +62,6 @@ std::vector<StatisticColumn> statistic_columns(const SweepDefinition& sweep, con
   return table;
 }
 
-/// index.h5 through the HDF5 C API (io/hdf5's handles); every failure an OutputError.
-class IndexFile {
- public:
-  explicit IndexFile(const std::string& path) : path_(path) {
-    file_ = hdf5::Handle(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
-    check(file_.valid(), "cannot create");
-  }
-  void attribute(const std::string& object, const std::string& name, const std::string& value) {
-    const hdf5::Handle type = hdf5::variable_text_type();
-    const hdf5::Handle space(H5Screate(H5S_SCALAR));
-    const char* text = value.c_str();
-    write_attribute(object, name, type.get(), space.get(), &text);
-  }
-  void attribute(const std::string& object, const std::string& name, double value) {
-    const hdf5::Handle space(H5Screate(H5S_SCALAR));
-    write_attribute(object, name, H5T_NATIVE_DOUBLE, space.get(), &value);
-  }
-  void attribute(const std::string& object, const std::string& name, long value) {
-    const hdf5::Handle space(H5Screate(H5S_SCALAR));
-    write_attribute(object, name, H5T_NATIVE_LONG, space.get(), &value);
-  }
-  void numbers(const std::string& path, const std::vector<double>& values, std::size_t columns, const std::string& units,
-               const std::string& description) {
-    const hsize_t dims[2] = {values.size() / std::max<std::size_t>(columns, 1), columns};
-    write(path, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, columns > 1 ? 2 : 1, dims, values.data(), units, description);
-  }
-  void integers(const std::string& path, const std::vector<long>& values, const std::string& description) {
-    const hsize_t dims[1] = {values.size()};
-    write(path, H5T_STD_I64LE, H5T_NATIVE_LONG, 1, dims, values.data(), "-", description);
-  }
-  void texts(const std::string& path, const std::vector<std::string>& values, const std::string& description) {
-    std::vector<const char*> pointers;
-    for (const std::string& value : values) pointers.push_back(value.c_str());
-    const hsize_t dims[1] = {values.size()};
-    const hdf5::Handle type = hdf5::variable_text_type();
-    write(path, type.get(), type.get(), 1, dims, pointers.data(), "-", description);
-  }
-  void close() { check(file_.close(), "cannot close"); }
-
- private:
-  void write(const std::string& path, hid_t file_type, hid_t memory_type, int rank, const hsize_t* dims, const void* data,
-             const std::string& units, const std::string& description) {
-    const hdf5::Handle space(H5Screate_simple(rank, dims, nullptr));
-    const hdf5::Handle links = hdf5::intermediate_group_links();
-    const hdf5::Handle dataset(
-        H5Dcreate2(file_.get(), path.c_str(), file_type, space.get(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
-    check(dataset.valid(), "cannot create dataset " + path + " in");
-    if (dims[0] > 0) check(H5Dwrite(dataset.get(), memory_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) >= 0, "cannot write " + path + " in");
-    attribute(path, "units", units);
-    attribute(path, "description", description);
-  }
-  void write_attribute(const std::string& object, const std::string& name, hid_t type, hid_t space, const void* data) {
-    const hdf5::Handle attribute(H5Acreate_by_name(file_.get(), object.c_str(), name.c_str(), type, space, H5P_DEFAULT,
-                                                   H5P_DEFAULT, H5P_DEFAULT));
-    check(attribute.valid() && H5Awrite(attribute.get(), type, data) >= 0, "cannot write attribute " + name + " in");
-  }
-  void check(bool succeeded, const std::string& action) {
-    if (!succeeded) throw OutputError(path_, action + " the sweep index", errno ? std::strerror(errno) : "HDF5 error");
-  }
-  std::string path_;
-  hdf5::Handle file_;
-};
-
 /// A CSV cell: quoted when it holds a comma, a quote or a line break.
 std::string csv_text(const std::string& text) {
   if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -154,7 +91,7 @@ void write_sweep_index(const std::string& directory, const SweepDefinition& swee
   const std::string path = (std::filesystem::path(directory) / "index.h5").string();
   const std::string partial = path + ".partial";
   {
-    IndexFile file(partial);
+    TableFile file(partial, "the sweep index");
     file.attribute("/", "sweep_file", sweep.sweep_file);
     std::string bases;
     for (const std::string& base : sweep.base_cases) bases += (bases.empty() ? "" : "\n") + base;

@@ -77,6 +77,24 @@ struct SweepOptions {
 /// when every run is complete, 4 when some failed, 2 for a bad sweep file or case, 1 if stopped.
 int sweep_command(const SweepOptions& options);
 
+struct RaoOptions {
+  std::string input;                   // CASE.yaml: regular-wave period sweep; OUT.h5: H1 from an irregular run
+  std::string periods;                 // --periods A:STEP:B or T1,T2,... [s] (sweep only)
+  double amplitude = 1.0;              // --amplitude a [m] of the sweep's regular waves
+  std::vector<std::string> channels;   // --channel; default the platform's six modes
+  std::vector<std::string> overrides;  // --set on the case (each run of a sweep; the H1 reference's case)
+  std::string case_path;               // --case: the case of an OUT.h5 (default its case_file attribute)
+  double segment = 0.0;                // --segment [s]: H1's Welch segment (0: about an eighth of the window)
+  int jobs = 1;                        // -j: runs at once (worker processes)
+  std::string output_directory;        // -o: default results/<input stem>_rao
+  bool plot = true;                    // --no-plot: no rao.png
+  bool quiet = false;
+};
+/// heavesim rao: RAOs per unit wave amplitude from a regular-wave sweep of a case or from
+/// one irregular run (H1), over the frequency-domain RAO (docs/rao.md). Exit 0; 2 bad
+/// input; 4 when some runs of a sweep failed; 1 otherwise.
+int rao_command(const RaoOptions& options);
+
 /// heavesim import-mksim: the MKSim model at `model_path` written as the case `case_path`.
 int import_mksim_command(const std::string& model_path, const std::string& case_path);
 

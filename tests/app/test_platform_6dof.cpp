@@ -20,7 +20,9 @@
 #include <array>
 #include <complex>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <Eigen/Eigenvalues>
@@ -31,6 +33,7 @@
 #include "app/scene/scene.hpp"
 #include "hydro/excitation/excitation_interpolation.hpp"
 #include "io/bem/wamit_reader.hpp"
+#include "io/hdf5/hdf5_reader.hpp"
 #include "signal/cross_spectrum.hpp"
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
@@ -327,6 +330,162 @@ TEST(Platform6Dof, IrregularSeaH1RaoMatchesTheFrequencyDomainRao) {
     RecordProperty(std::string(names[mode]) + "_amplitude_error", std::to_string(worst_amplitude));
     RecordProperty(std::string(names[mode]) + "_phase_error_deg", std::to_string(worst_phase));
   }
+}
+
+
+/// The RAO of `channel` in a rao.h5 of `heavesim rao`, per row, as complex numbers in the
+/// file's units (rotations deg/m), with the rows' angular frequencies and coherences.
+struct RaoRows {
+  std::vector<double> frequencies, coherence;
+  std::vector<std::complex<double>> values;
+};
+RaoRows read_rao_rows(const std::string& path, const std::string& channel) {
+  const hdf5::Reader file(path, "rao.h5");
+  RaoRows rows;
+  rows.frequencies = file.read("/frequency").values;
+  const std::vector<double> amplitude = file.read("/channels/" + channel + "/amplitude").values;
+  const std::vector<double> phase = file.read("/channels/" + channel + "/phase").values;
+  for (std::size_t r = 0; r < amplitude.size(); ++r) rows.values.push_back(std::polar(amplitude[r], phase[r] * M_PI / 180));
+  if (file.has("/channels/" + channel + "/coherence")) rows.coherence = file.read("/channels/" + channel + "/coherence").values;
+  return rows;
+}
+
+/// X(w) = Z(w)^-1 F(w, beta) with A(w), B(w) and F linear in w between the BEM points (as
+/// the irregular-sea test above), from the WAMIT files and semisub.frc.
+hydro::ComplexVector6 reference_rao(double w, double heading, const CaseDefinition& definition) {
+  const hydro::BemData& bem = semisub();
+  const Matrix6 stiffness = bem.hydrostatic_stiffness + case_matrix(definition, "mooring");
+  const Matrix6 viscous = case_matrix(definition, "viscous");
+  const auto [added_mass, damping] = radiation_at(w);
+  const std::complex<double> i(0.0, 1.0);
+  const ComplexMatrix6 impedance = (-w * w * (frc_mass_matrix() + added_mass) + stiffness).cast<std::complex<double>>() +
+                                   i * w * (damping + viscous).cast<std::complex<double>>();
+  return impedance.partialPivLu().solve(hydro::interpolate_excitation(bem.excitation, w, heading));
+}
+
+// `heavesim rao CASE --periods ...` end to end (case -> sweep of runs in worker processes
+// -> fits -> rao.h5): surge, heave and pitch of the MSS semi in head seas at the BEM
+// periods 8, 10, 12 and 15 s against the reference solved here, with the regular-wave
+// test's bars and rule (3 %, 3 deg where the RAO is at least 10 % of the largest of its
+// kind). The runs are the case's own: 800 s, 100 s ramp, fitted over the whole cycles of
+// the last 400 s. Why that is steady: the slowest transients are the 100 s mooring modes
+// at 5 % of critical, whose envelope falls by e^(-0.05 (2 pi / 100 s) t), to 0.28 at 400 s
+// and 0.08 at 800 s; they sit a decade below the wave frequency, and over 30-50 wave
+// cycles their projection on cos and sin of w is a further ~1/(w T_window) smaller. The
+// regular-wave test above, with the same runs fitted over 5 cycles, measured at most 1.3 %
+// and 2.1 deg. Measured here (2026-11-25): at most 0.99 % (surge, 15 s) and 2.1 deg
+// (pitch, 8 s, where its RAO is small), the same runs as that test.
+TEST(Platform6Dof, RaoCommandRegularSweepMatchesTheFrequencyDomainRao) {
+  const std::string directory = ::testing::TempDir() + "rao_semisub_sweep";
+  std::filesystem::remove_all(directory);
+  const auto result = testing::run_command_line(
+      testing::heavesim_binary() + " rao " + testing::source_path("cases/hydro/semisub_6dof_regular_wave.yaml") +
+      " --periods 8,10,12,15 --set parameters.heading=pi --channel surge --channel heave --channel pitch -j 2 --no-plot -o " +
+      directory);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::printf("%s", result.output.c_str());
+  const CaseDefinition definition = case_definition("cases/hydro/semisub_6dof_regular_wave.yaml");
+  double worst_amplitude = 0.0, worst_phase = 0.0;
+  std::map<std::string, RaoRows> rows;
+  for (const char* name : {"surge", "heave", "pitch"}) rows[name] = read_rao_rows(directory + "/rao.h5", name);
+  const std::vector<double>& frequencies = rows["heave"].frequencies;
+  ASSERT_EQ(frequencies.size(), 4u);
+  for (std::size_t r = 0; r < frequencies.size(); ++r) {
+    const double periods[] = {8, 10, 12, 15};
+    EXPECT_NEAR(frequencies[r], 2 * M_PI / periods[r], 1e-12);
+    const hydro::ComplexVector6 rao = reference_rao(frequencies[r], M_PI, definition);
+    const double largest_translation = std::max({std::abs(rao[0]), std::abs(rao[2]), 0.05});
+    for (const auto& [name, mode] : {std::pair{"surge", 0}, std::pair{"heave", 2}, std::pair{"pitch", 4}}) {
+      const std::complex<double> expected = mode == 4 ? rao[mode] * (180 / M_PI) : rao[mode];  // the file: deg/m
+      const std::complex<double> measured = rows[name].values[r];
+      const double scale = mode < 3 ? largest_translation : std::max(std::abs(rao[4]), 0.05 / 20) * 180 / M_PI;
+      const double amplitude_error = std::abs(std::abs(measured) / std::abs(expected) - 1.0);
+      const double phase_error = std::abs(std::arg(measured / expected)) * 180 / M_PI;
+      std::printf("T %4.1f %-5s: |X| %.4e  reference %.4e  amplitude error %5.2f %%  phase error %5.2f deg\n",
+                  2 * M_PI / frequencies[r], name, std::abs(measured), std::abs(expected), 100 * amplitude_error, phase_error);
+      if (std::abs(expected) < 0.1 * scale) continue;
+      EXPECT_LT(amplitude_error, 0.03) << name << " at T = " << 2 * M_PI / frequencies[r];
+      EXPECT_LT(phase_error, 3.0) << name << " at T = " << 2 * M_PI / frequencies[r];
+      worst_amplitude = std::max(worst_amplitude, amplitude_error);
+      worst_phase = std::max(worst_phase, phase_error);
+    }
+  }
+  // The table's units and the CSV beside it.
+  const hdf5::Reader file(directory + "/rao.h5", "rao.h5");
+  EXPECT_EQ(file.text_attribute("/channels/heave/amplitude", "units").value_or(""), "m/m");
+  EXPECT_EQ(file.text_attribute("/channels/pitch/amplitude", "units").value_or(""), "deg/m");
+  std::ifstream csv(directory + "/rao.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("period [s],frequency [rad/s],surge amplitude [m/m],surge phase [deg],surge bem amplitude [m/m],"
+                         "surge bem phase [deg],heave amplitude [m/m]",
+                         0),
+            0u)
+      << header;
+  RecordProperty("amplitude_error", std::to_string(worst_amplitude));
+  RecordProperty("phase_error_deg", std::to_string(worst_phase));
+}
+
+
+// `heavesim rao OUT.h5` end to end on the 3-hour irregular run of the irregular-sea test
+// above (JONSWAP Hs 4 m, Tp 10 s, head seas, 1000 components, window from 200 s): the
+// command reads the elevation the run recorded at the reference point and the platform's
+// motions from the file, picks 2048-sample segments (the largest power of two giving at
+// least 15), and writes H1 with its coherence per bin of the sea's band. Compared here at
+// every bin with coherence > 0.9 and |RAO| >= 10 % of the mode's largest over those bins
+// with the reference solved in this file, bars 3 % and 3 deg as argued for the C++-level
+// test above (same run, same estimator; what differs is only the path through the result
+// file: float64 samples, the recorded elevation instead of the wave train's). Also draws
+// the figure through scripts/plot_rao.py. Measured (2026-11-25): surge 2.92 % and 1.53 deg
+// (104 bins), heave 1.45 % and 1.18 deg (74), pitch 2.77 % and 1.54 deg (106): the C++-level
+// test's figures to the digits it prints.
+TEST(Platform6Dof, RaoCommandH1MatchesTheFrequencyDomainRao) {
+  const std::string run = ::testing::TempDir() + "semisub_irregular_1000.h5";
+  const std::string directory = ::testing::TempDir() + "rao_semisub_h1";
+  std::filesystem::remove_all(directory);
+  const auto ran = testing::run_case("cases/hydro/semisub_6dof_irregular_sea.yaml", run,
+                                     "-q --set waves.components=1000 --set output.evaluate_after=200 "
+                                     "--set output.channels=[bodies,forces]");
+  ASSERT_EQ(ran.exit_code, 0) << ran.output;
+  const auto result = testing::run_command_line(testing::heavesim_binary() + " rao " + run +
+                                                " --channel surge --channel heave --channel pitch -o " + directory);
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  std::printf("%s", result.output.c_str());
+  EXPECT_NE(result.output.find("segments of 2048 samples"), std::string::npos) << result.output;
+  const CaseDefinition definition = case_definition("cases/hydro/semisub_6dof_irregular_sea.yaml");
+  for (const auto& [name, mode] : {std::pair{"surge", 0}, std::pair{"heave", 2}, std::pair{"pitch", 4}}) {
+    const RaoRows rows = read_rao_rows(directory + "/rao.h5", name);
+    ASSERT_EQ(rows.coherence.size(), rows.values.size());
+    std::vector<std::complex<double>> expected(rows.values.size());
+    double largest = 0.0;
+    for (std::size_t r = 0; r < rows.values.size(); ++r) {
+      expected[r] = reference_rao(rows.frequencies[r], M_PI, definition)[mode] * (mode == 4 ? 180 / M_PI : 1.0);
+      if (rows.coherence[r] > 0.9) largest = std::max(largest, std::abs(expected[r]));
+    }
+    int compared = 0;
+    double worst_amplitude = 0.0, worst_phase = 0.0;
+    for (std::size_t r = 0; r < rows.values.size(); ++r) {
+      if (!(rows.coherence[r] > 0.9) || std::abs(expected[r]) < 0.1 * largest) continue;
+      const double amplitude_error = std::abs(std::abs(rows.values[r]) / std::abs(expected[r]) - 1.0);
+      const double phase_error = std::abs(std::arg(rows.values[r] / expected[r])) * 180 / M_PI;
+      EXPECT_LT(amplitude_error, 0.03) << name << " at T = " << 2 * M_PI / rows.frequencies[r] << " s";
+      EXPECT_LT(phase_error, 3.0) << name << " at T = " << 2 * M_PI / rows.frequencies[r] << " s";
+      worst_amplitude = std::max(worst_amplitude, amplitude_error);
+      worst_phase = std::max(worst_phase, phase_error);
+      ++compared;
+    }
+    std::printf("%s: rao OUT.h5 vs the frequency-domain RAO at %d bins: worst amplitude %.2f %%, phase %.2f deg\n", name,
+                compared, 100 * worst_amplitude, worst_phase);
+    EXPECT_GE(compared, 50) << name;
+    RecordProperty(std::string(name) + "_amplitude_error", std::to_string(worst_amplitude));
+    RecordProperty(std::string(name) + "_phase_error_deg", std::to_string(worst_phase));
+  }
+  // The figure: a PNG (its signature) of some size.
+  std::ifstream png(directory + "/rao.png", std::ios::binary);
+  char signature[8] = {};
+  png.read(signature, 8);
+  EXPECT_EQ(std::string(signature + 1, 3), "PNG");
+  EXPECT_GT(std::filesystem::file_size(directory + "/rao.png"), 20000u);
 }
 
 }  // namespace
