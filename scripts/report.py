@@ -48,6 +48,7 @@ except ImportError:
 import plot_reaction_envelope  # noqa: E402  the figures: one copy of the plotting rules
 import plot_run  # noqa: E402
 from plot_run import NOTHING, engineering_scale  # noqa: E402
+from heavesim import rao  # noqa: E402  RAO tables of `heavesim rao` (docs/rao.md)
 
 import matplotlib  # noqa: E402
 
@@ -478,10 +479,66 @@ def figures_section(r, stats, window_start, directory):
     return "".join(parts)
 
 
-def rao_section(result):
-    """RAOs where the file has them (the RAO front end, branch `rao`, wires in here);
-    "" when there is no RAO data."""
-    return ""
+def rao_section(binary, r, case, directory):
+    """The platform's RAOs from this run when it is an irregular sea whose wave elevation
+    was recorded: `heavesim rao RESULT.h5` (H1 with coherence over the evaluation window,
+    beside the frequency-domain RAO of the case's BEM data; docs/rao.md), its figure and
+    a table of each mode's peak and its agreement with the frequency domain where the
+    coherence is above 0.9. "" for regular waves or calm water (one frequency or none:
+    nothing to estimate a transfer function from; a regular sweep is `heavesim rao CASE`)."""
+    waves = case.get("waves")
+    if not isinstance(waves, dict) or str(waves.get("type", "regular")) == "regular":
+        return ""
+    if not any(str(path).endswith("/wave_elevation") for path in r.channels):
+        return ""
+    out = os.path.join(directory, "rao")
+    done = subprocess.run([binary, "rao", r.path, "-o", out, "--no-plot", "-q"], capture_output=True, text=True)
+    parts = ['<section id="rao"><h2>RAOs from this run (H1)</h2>']
+    if done.returncode != 0:
+        parts.append(f"<p>heavesim rao could not estimate them: {html.escape(done.stderr.strip())}</p></section>")
+        return "".join(parts)
+    table_of = rao.read(os.path.join(out, "rao.h5"))
+    strong_threshold = rao.COHERENCE_THRESHOLD
+    rows, idle = [], []
+    largest = max((float(np.nanmax(channel.amplitude)) for channel in table_of.channels.values()
+                   if np.isfinite(channel.amplitude).any()), default=0.0)
+    for name, channel in table_of.channels.items():
+        # A mode the sea does not excite (sway, roll and yaw in head seas: ~1e-8 of the
+        # others) carries round-off, by the rule of the plots and the joint loads.
+        if not np.isfinite(channel.amplitude).any() or np.nanmax(channel.amplitude) <= NOTHING * largest:
+            idle.append(name)
+            continue
+        strong = channel.coherence >= strong_threshold
+        peak = int(np.nanargmax(np.where(strong, channel.amplitude, np.nan))) if strong.any() else None
+        error = phase_error = None
+        if channel.bem_amplitude is not None and strong.any():
+            # Judged where the estimate is trustworthy (coherence) and the RAO is at least
+            # 10 % of its largest (a phase of almost nothing is noise): docs/rao.md's bar.
+            reference = np.abs(channel.bem_amplitude)
+            judged = strong & (reference >= 0.1 * np.nanmax(reference[strong]))
+            error = float(np.max(np.abs(channel.amplitude[judged] - reference[judged]) / np.max(reference[judged])))
+            phase_error = float(np.max(np.abs((channel.phase[judged] - channel.bem_phase[judged] + 180.0) % 360.0
+                                              - 180.0)))
+        rows.append([text_cell(name), text_cell(channel.unit), cell(int(strong.sum()), 6),
+                     cell(channel.amplitude[peak] if peak is not None else None),
+                     cell(table_of.period[peak] if peak is not None else None),
+                     cell(100.0 * error if error is not None else None, 3),
+                     cell(phase_error, 3)])
+    parts.append(f"<p>Transfer functions from the recorded wave elevation to each response (H1 = S_xy / S_xx, "
+                 f"Welch segments), per unit wave amplitude, phase relative to the wave crest at the platform's "
+                 f"reference point; points with coherence below {strong_threshold:g} are faint in the figure and "
+                 f"left out of the table, as are, for the comparison with the frequency-domain RAO of the case's BEM data "
+                 f"(the line), bins where that RAO is below 10 % of its largest.</p>")
+    parts.append(table("rao-table", ["channel", "unit", "bins with coherence ≥ 0.9", "peak |RAO|", "at period [s]",
+                                     "largest |ΔRAO| / peak vs BEM [%]", "largest phase difference [deg]"], rows))
+    if idle:
+        parts.append(f"<p>No response (below 1e-6 of the largest RAO: round-off), not listed or drawn: "
+                     f"{html.escape(', '.join(idle))}.</p>")
+    figure_path = os.path.join(directory, "rao.png")
+    rao.figure(table_of, figure_path, channels=[name for name in table_of.channels if name not in idle])
+    parts.append(embed_png(figure_path, "RAOs: H1 from this run and the frequency-domain RAO"))
+    parts.append("</section>")
+    return "".join(parts)
 
 
 # The page checks itself once loaded: an image that did not decode is counted, written
@@ -532,7 +589,7 @@ def report(r, binary, duration, start, log_path):
             validation_section(binary, r, log_path),
             compensator_section(r, case, stats, directory),
             joint_loads_section(r, stats, duration),
-            rao_section(r),
+            rao_section(binary, r, case, directory),
             figures_section(r, stats, window_start, directory),
             statistics_section(r, stats, message),
         ]

@@ -407,6 +407,13 @@ int cross_spectral(const RaoOptions& options) {
     if (!recorded)
       throw InputError(SourceLocation{path, 0, 0}, "case_file", "no case_file attribute", "a heavesim result file, or --case CASE.yaml");
     case_path = *recorded;
+    // The run records the case path as it was given, relative to where the run was made.
+    std::error_code ignored;
+    if (!std::filesystem::exists(case_path, ignored))
+      throw InputError(SourceLocation{path, 0, 0}, "case_file",
+                       "the run's case file '" + case_path + "', which does not exist from " +
+                           std::filesystem::current_path(ignored).string(),
+                       "the directory the run was made from, or --case CASE.yaml");
   }
   const CaseDefinition definition = load_case(case_path, options.overrides);
   const auto [excitation, platform] = wave_excitation_element(definition);

@@ -2,14 +2,8 @@
 // processes (-j N) or MPI ranks (under mpirun), each through run_command exactly as
 // `heavesim run` would (in-process, quiet, its output captured in DIR/logs/<run>.log),
 // and write the index (docs/sweeps.md).
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <chrono>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <string>
 
 #include <fmt/format.h>
 

@@ -103,5 +103,23 @@ TEST(RaoCommand, ResultFileWithoutTheWaveElevationNamesTheChannelToRecord) {
       << missing.output;
 }
 
+TEST(RaoCommand, ARelativeCaseFileNotFoundFromHereNamesItAndAsksForCase) {
+  // A run records its case path as given; read from another directory, the RAO command
+  // names that path and the remedy instead of failing on the case reader's missing file.
+  const std::string output = ::testing::TempDir() + "rao_relative_case.h5";
+  const auto run = run_command_line("cd " + source_path("") + " && " + heavesim_binary() +
+                                    " run cases/hydro/semisub_6dof_irregular_sea.yaml -q -o " + output +
+                                    " --set solver.t_end=20 --set output.evaluate_after=0");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const auto result = run_command_line("cd / && " + rao(output));
+  EXPECT_EQ(result.exit_code, 2) << result.output;
+  EXPECT_NE(result.output.find(output), std::string::npos) << result.output;
+  EXPECT_NE(result.output.find("case_file: found the run's case file 'cases/hydro/semisub_6dof_irregular_sea.yaml', "
+                               "which does not exist from /"),
+            std::string::npos)
+      << result.output;
+  EXPECT_NE(result.output.find("or --case CASE.yaml"), std::string::npos) << result.output;
+}
+
 }  // namespace
 }  // namespace heavesim
