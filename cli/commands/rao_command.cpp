@@ -14,11 +14,7 @@
 // is written beside them. Output: DIR/rao.h5, DIR/rao.csv and the figure DIR/rao.png
 // drawn by scripts/plot_rao.py (Debian's /usr/bin/python3 with matplotlib, as
 // `heavesim operability` runs its script).
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -37,11 +33,10 @@
 #include "cli/commands/command_support.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/logged_run.hpp"
+#include "cli/commands/project_script.hpp"
 #include "io/hdf5/hdf5_reader.hpp"
 #include "signal/cross_spectrum.hpp"
 #include "signal/harmonic_fit.hpp"
-
-extern char** environ;
 
 namespace heavesim {
 namespace {
@@ -210,23 +205,7 @@ void print_comparison(const RaoTable& table) {
 
 /// Runs scripts/plot_rao.py on DIR/rao.h5 (a child process; its exit code).
 int draw_figure(const std::string& directory) {
-  const std::string python = "/usr/bin/python3";
-  const std::string script = std::string(heavesim_source_dir) + "/scripts/plot_rao.py";
-  const std::string table = (std::filesystem::path(directory) / "rao.h5").string();
-  std::vector<std::string> arguments = {python, script, table};
-  std::vector<char*> argv;
-  for (std::string& argument : arguments) argv.push_back(argument.data());
-  argv.push_back(nullptr);
-  std::fflush(nullptr);
-  pid_t pid = 0;
-  if (posix_spawn(&pid, python.c_str(), nullptr, nullptr, argv.data(), environ) != 0) {
-    fmt::print(stderr, "heavesim: error: cannot run {} {}\n", python, script);
-    return 1;
-  }
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
+  return run_project_script("plot_rao.py", {(std::filesystem::path(directory) / "rao.h5").string()});
 }
 
 std::string output_directory(const RaoOptions& options) {
