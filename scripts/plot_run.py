@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Plots a heavesim result file for an engineer: joint coordinates and speeds (one axis
-per unit), the loads every joint, loop and driver carries (the dynamic part of large
+per unit), the loads every joint, loop, driver and contact carries (the dynamic part of large
 loads made visible, joints that carry nothing left out), and energy, one PNG each.
 
     /usr/bin/python3 scripts/plot_run.py results/two_link.h5 [-o results]
@@ -32,6 +32,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
+import yaml  # noqa: E402  the resolved case the file holds (/case/yaml)
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent))
 import heavesim  # noqa: E402  the repository's heavesim.py: the package in build/python
@@ -138,9 +139,23 @@ def plot_joints(r, time, stem, out):
 
 # --- loads ------------------------------------------------------------------------------
 
+CONTACT_KINDS = ("ground_contact",)  # force kinds whose load is a contact force (app/forces)
+
+
+def contact_elements(r):
+    """The names of the case's contact force elements, from the resolved case the file holds."""
+    try:
+        case = yaml.safe_load(r.case_yaml or "") or {}
+    except yaml.YAMLError:
+        return []
+    forces = case.get("forces", []) if isinstance(case, dict) else []
+    return [force["name"] for force in forces
+            if isinstance(force, dict) and force.get("type") in CONTACT_KINDS and "name" in force]
+
+
 def load_sources(r):
     """[(title, force channel or None, moment channel or None)] for every tree joint, loop
-    (constraint with a reaction) and driver in the file."""
+    (constraint with a reaction), driver and contact element in the file."""
     sources = []
     for name in r.joints:
         if f"joints/{name}/reaction_force" in r:
@@ -156,6 +171,9 @@ def load_sources(r):
             channel = r.channel(path)
             sources.append((f"driver {match.group(1)}", channel if match.group(2) == "force" else None,
                             channel if match.group(2) == "torque" else None))
+    for name in contact_elements(r):
+        if f"forces/{name}/force" in r:  # the normal force of the contact (e.g. weight on bit)
+            sources.append((f"contact {name}", r.channel(f"forces/{name}/force"), None))
     return sources
 
 
