@@ -9,6 +9,7 @@ namespace heavesim {
 DantzigWorkspace::DantzigWorkspace(int size)
     : capacity(size),
       cholesky(size, size),
+      clamped_columns(size, size),
       w(size),
       lower(size),
       upper(size),
@@ -36,6 +37,7 @@ bool append_clamped(const MatrixX& M, DantzigWorkspace& ws, int j, double tolera
   if (!(pivot > tolerance * std::abs(M(j, j)))) return false;
   ws.cholesky.row(c).head(c) = y.transpose();
   ws.cholesky(c, c) = std::sqrt(pivot);
+  ws.clamped_columns.col(c).head(M.rows()) = M.col(j);
   ws.clamped.push_back(j);  // within the reserved capacity
   return true;
 }
@@ -43,7 +45,7 @@ bool append_clamped(const MatrixX& M, DantzigWorkspace& ws, int j, double tolera
 // Removes position p of C. With L = [L11 0 0; l21 l22 0; L31 l32 L33], the factor of
 // M_CC without row/column p is [L11 0; L31 L33'] with L33' L33'^T = L33 L33^T + l32 l32^T:
 // a rank-one Cholesky update by Givens-like steps (Gill, Golub, Murray & Saunders 1974).
-void remove_clamped(DantzigWorkspace& ws, int p) {
+void remove_clamped(DantzigWorkspace& ws, int p, int n) {
   const int c = static_cast<int>(ws.clamped.size());
   MatrixX& L = ws.cholesky;
   VectorX& x = ws.gathered;
@@ -61,6 +63,7 @@ void remove_clamped(DantzigWorkspace& ws, int p) {
     for (int col = 0; col < p; ++col) L(i - 1, col) = L(i, col);
     for (int col = p + 1; col <= i; ++col) L(i - 1, col - 1) = L(i, col);
   }
+  for (int k = p + 1; k < c; ++k) ws.clamped_columns.col(k - 1).head(n) = ws.clamped_columns.col(k).head(n);
   ws.clamped.erase(ws.clamped.begin() + p);
 }
 
@@ -146,11 +149,10 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       L.solveInPlace(v);
       L.transpose().solveInPlace(v);
       auto direction_w = ws.direction_w.head(n);
+      v *= -s;  // dz_C
       direction_w = s * M.col(i);
-      for (int k = 0; k < c; ++k) {
-        ws.direction_z[ws.clamped[k]] = -s * v[k];
-        direction_w += (-s * v[k]) * M.col(ws.clamped[k]);
-      }
+      direction_w.noalias() += ws.clamped_columns.topLeftCorner(n, c) * v;
+      for (int k = 0; k < c; ++k) ws.direction_z[ws.clamped[k]] = v[k];
       const double dw_i = ws.direction_w[i];
       if (!(s * dw_i > options.pivot_tolerance * std::abs(M(i, i)))) return singular(i);
       // The longest step before a set changes.
@@ -193,7 +195,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
         const int k = static_cast<int>(std::find(ws.clamped.begin(), ws.clamped.end(), limiting) - ws.clamped.begin());
         z[limiting] = ws.direction_z[limiting] > 0.0 ? ws.upper[limiting] : ws.lower[limiting];
         ws.state[limiting] = ws.direction_z[limiting] > 0.0 ? at_upper : at_lower;
-        remove_clamped(ws, k);
+        remove_clamped(ws, k, n);
       } else {  // a row at a bound reached w = 0: it joins C
         ws.w[limiting] = 0.0;
         if (!append_clamped(M, ws, limiting, options.pivot_tolerance)) return singular(limiting);

@@ -32,6 +32,9 @@ struct DantzigWorkspace {
   explicit DantzigWorkspace(int size = 0);
   int capacity = 0;
   MatrixX cholesky;  ///< lower factor of M_CC (top-left |C| x |C|), C in the order of `clamped`
+  /// M's columns of C, contiguous in the order of `clamped` (left |C| columns): the step's
+  /// dw = M_:C dz_C is then one matrix-vector product instead of |C| passes over dw.
+  MatrixX clamped_columns;
   VectorX w, lower, upper, direction_z, direction_w, gathered;
   std::vector<int> clamped;     ///< C: rows with w = 0
   std::vector<signed char> state;  ///< per row: 0 not yet driven, 1 clamped, 2 at lo, 3 at hi
