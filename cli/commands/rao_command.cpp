@@ -34,6 +34,7 @@
 #include "cli/commands/commands.hpp"
 #include "cli/commands/logged_run.hpp"
 #include "cli/commands/project_script.hpp"
+#include "cli/commands/recorded_time.hpp"
 #include "io/hdf5/hdf5_reader.hpp"
 #include "signal/cross_spectrum.hpp"
 #include "signal/harmonic_fit.hpp"
@@ -125,28 +126,6 @@ std::optional<std::string> output_channels_override(const std::vector<RaoChannel
   if (reactions) list += ", reactions";
   if (energy) list += ", energy";
   return "output.channels=[" + list + "]";
-}
-
-/// The recorded time axis of a result file: its whole samples (samples_written) and a uniform step.
-struct TimeAxis {
-  std::vector<double> time;
-  double step = 0.0;
-};
-
-TimeAxis read_time_axis(const hdf5::Reader& file, const std::string& path) {
-  TimeAxis axis;
-  try {
-    axis.time = file.read("/time").values;
-  } catch (const hydro::DataError& error) {
-    throw InputError(SourceLocation{path, 0, 0}, "/time", error.found(), error.expected());
-  }
-  const auto samples = std::min<std::size_t>(
-      axis.time.size(), static_cast<std::size_t>(file.number_attribute("/", "samples_written").value_or(axis.time.size())));
-  axis.time.resize(samples);
-  if (samples < 8)
-    throw InputError(SourceLocation{path, 0, 0}, "/time", fmt::format("{} samples", samples), "a record of at least 8 samples");
-  axis.step = (axis.time.back() - axis.time.front()) / static_cast<double>(samples - 1);
-  return axis;
 }
 
 RaoColumn empty_column(const std::string& name) { return RaoColumn{name, "", {}, {}, {}, {}}; }
@@ -333,7 +312,7 @@ int regular_sweep(const RaoOptions& options) {
     table.notes.push_back(record.result_file);
     const std::string path = (std::filesystem::path(directory) / record.result_file).string();
     const hdf5::Reader file(path, "a heavesim result file");
-    const TimeAxis axis = read_time_axis(file, path);
+    const RecordedTime axis = read_recorded_time(file, path, 8);
     // The last whole cycles after output.evaluate_after.
     const double start = file.number_attribute("/", "statistics_window_start").value_or(axis.time.front());
     const double cycles = std::floor((axis.time.back() - start) / periods[i] + 1e-9);
@@ -397,7 +376,7 @@ int cross_spectral(const RaoOptions& options) {
   const CaseDefinition definition = load_case(case_path, options.overrides);
   const auto [excitation, platform] = wave_excitation_element(definition);
   const std::vector<RaoChannel> channels = parse_channels(options, platform, definition);
-  const TimeAxis axis = read_time_axis(file, path);
+  const RecordedTime axis = read_recorded_time(file, path, 8);
   const std::size_t samples = axis.time.size();
 
   RaoTable table;

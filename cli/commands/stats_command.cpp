@@ -10,6 +10,7 @@
 
 #include "app/case/input_error.hpp"
 #include "cli/commands/commands.hpp"
+#include "cli/commands/recorded_time.hpp"
 #include "io/hdf5/hdf5_reader.hpp"
 #include "signal/statistic_fields.hpp"
 
@@ -56,23 +57,10 @@ int stats_command(const StatsOptions& options) {
     throw InputError(SourceLocation{"--duration", 0, 0}, "", fmt::format("{}", options.duration),
                      "a duration > 0 s (default 10800 s = 3 h)");
 
-  std::vector<double> time;
-  hsize_t samples = 0;
-  try {
-    time = reader.read("/time").values;
-    samples = static_cast<hsize_t>(reader.number_attribute("/", "samples_written").value_or(time.size()));
-  } catch (const hydro::DataError& error) {
-    throw as_input_error(error, path, "/time");
-  }
-  samples = std::min<hsize_t>(samples, time.size());  // the reader's rule (docs/result-file.md)
-  if (samples < 2)
-    throw InputError(SourceLocation{path, 0, 0}, "/time", fmt::format("{} samples", samples), "at least 2 samples");
-  time.resize(samples);
-  const double dt = (time.back() - time.front()) / static_cast<double>(samples - 1);
-  for (hsize_t i = 1; i < samples; ++i)
-    if (std::abs(time[i] - time[i - 1] - dt) > 1e-6 * dt)
-      throw InputError(SourceLocation{path, 0, 0}, "/time", fmt::format("a step of {} s at sample {}", time[i] - time[i - 1], i),
-                       fmt::format("a uniform step ({} s)", dt));
+  const RecordedTime recorded = read_recorded_time(reader, path, 2);
+  const std::vector<double>& time = recorded.time;
+  const auto samples = static_cast<hsize_t>(time.size());
+  const double dt = recorded.step;
 
   // The window: --after, else the one the run evaluated (output.evaluate_after).
   const double after = options.after.value_or(reader.number_attribute("/", "statistics_window_start").value_or(time.front()));
