@@ -142,14 +142,19 @@ def plot_joints(r, time, stem, out):
 CONTACT_KINDS = ("ground_contact",)  # force kinds whose load is a contact force (app/forces)
 
 
-def contact_elements(r):
-    """The names of the case's contact force elements, from the resolved case the file holds."""
+def case_model(r):
+    """The resolved case the file holds (/case/yaml: the model as the run read it) as a
+    dict, or {}."""
     try:
         case = yaml.safe_load(r.case_yaml or "") or {}
     except yaml.YAMLError:
-        return []
-    forces = case.get("forces", []) if isinstance(case, dict) else []
-    return [force["name"] for force in forces
+        return {}
+    return case if isinstance(case, dict) else {}
+
+
+def contact_elements(r):
+    """The names of the case's contact force elements."""
+    return [force["name"] for force in case_model(r).get("forces", [])
             if isinstance(force, dict) and force.get("type") in CONTACT_KINDS and "name" in force]
 
 

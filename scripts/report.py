@@ -47,7 +47,7 @@ except ImportError:
     import heavesim  # noqa: E402
 import plot_reaction_envelope  # noqa: E402  the figures: one copy of the plotting rules
 import plot_run  # noqa: E402
-from plot_run import NOTHING, engineering_scale  # noqa: E402
+from plot_run import NOTHING, case_model, engineering_scale  # noqa: E402
 from heavesim import rao  # noqa: E402  RAO tables of `heavesim rao` (docs/rao.md)
 
 import matplotlib  # noqa: E402
@@ -117,15 +117,6 @@ def run_stats(binary, path, duration, start):
     answer = json.loads(done.stdout)
     table = {(item["channel"], item["column"]): item["statistics"] for item in answer["channels"]}
     return table, answer["window_start"], ""
-
-
-def case_model(r):
-    """The resolved case as a dict (the model as the run read it), or {}."""
-    try:
-        case = yaml.safe_load(r.case_yaml or "") or {}
-    except yaml.YAMLError:
-        return {}
-    return case if isinstance(case, dict) else {}
 
 
 # --- HTML helpers ----------------------------------------------------------------------
@@ -267,13 +258,14 @@ def validation_section(binary, r, log_path):
         # A row starts with a check's id and ends with PASS or FAIL ("FAIL (why)" for a check
         # that did not run); the closing "N validation rows FAIL" line is not a row.
         ids = {check[0] for check in checks}
-        rows = [line for line in log_path.read_text().splitlines()
+        text = log_path.read_text()
+        rows = [line for line in text.splitlines()
                 if line.split()[:1] and line.split()[0] in ids and re.search(r"\s(PASS|FAIL)(\s*$|\s+\()", line)]
         passed = sum(bool(re.search(r"\sPASS\s*$", line)) for line in rows)
         status = "all PASS" if rows and passed == len(rows) else f"{len(rows) - passed} FAIL"
         parts.append(f'<p id="validation-log" data-rows="{len(rows)}" data-passed="{passed}">Saved table '
                      f"{html.escape(str(log_path))}: {len(rows)} rows, {passed} PASS: <strong>{status}</strong>.</p>"
-                     f"<details><summary>the table</summary><pre>{html.escape(log_path.read_text())}</pre></details>")
+                     f"<details><summary>the table</summary><pre>{html.escape(text)}</pre></details>")
     parts.append("<details><summary>the checks</summary>" +
                  table("validation-checks", ["id", "check"], [[text_cell(c[0]), text_cell(c[1] if len(c) > 1 else "")]
                                                               for c in checks]) + "</details>")
@@ -296,7 +288,7 @@ def design_section(r, case, stats):
     summary = r.summary
     rows = []
 
-    def add(quantity, source, statistics, unit, column=None):
+    def add(quantity, source, statistics, unit):
         if not statistics:
             return
         rows.append([f"<th>{html.escape(quantity)}</th>", text_cell(source), text_cell(unit)] +
@@ -305,7 +297,8 @@ def design_section(r, case, stats):
                                                                "mpm_rayleigh_duration", "mpm_weibull_duration")])
 
     add("hook load", "joints/td_string/reaction_force z", stats.get(("/joints/td_string/reaction_force", 2)), "N")
-    for name, joint in compensators(r, case):
+    found = compensators(r, case)
+    for name, joint in found:
         if joint and f"reaction_force_{joint}_mean_N" in summary:
             rows.append([f"<th>compensator load ({html.escape(name)})</th>",
                          text_cell(f"|joints/{joint}/reaction_force| (summary)"), text_cell("N"),
@@ -314,20 +307,18 @@ def design_section(r, case, stats):
                          cell(summary.get(f"reaction_force_{joint}_min_N")),
                          cell(summary.get(f"reaction_force_{joint}_max_N")), "<td>–</td>", "<td>–</td>"])
         add(f"stroke ({name})", f"forces/{name}/stroke", stats.get((f"/forces/{name}/stroke", 0)), "m")
-    for item in case.get("forces", []):
-        if isinstance(item, dict) and item.get("type") == "ground_contact":
-            add(f"weight on bit ({item['name']})", f"forces/{item['name']}/force",
-                stats.get((f"/forces/{item['name']}/force", 0)), "N")
+    for name in plot_run.contact_elements(r):
+        add(f"weight on bit ({name})", f"forces/{name}/force", stats.get((f"/forces/{name}/force", 0)), "N")
     headings = ["quantity", "dataset", "unit", "mean", "std", "min", "max", "MPM D Rayleigh", "MPM D Weibull"]
     body = table("design-quantities", headings, rows) if rows else "<p>No design quantity in this file.</p>"
     efficiencies = [f"<li>{html.escape(name)}: η = {summary[name + '_efficiency']:.4f}</li>"
-                    for name, _ in compensators(r, case) if f"{name}_efficiency" in summary]
+                    for name, _ in found if f"{name}_efficiency" in summary]
     return ("<section><h2>Design quantities</h2><p>Definitions: docs/result-file.md, \"Design quantities\". "
             "Statistics over the evaluation window; MPM over D.</p>" + body +
             (f"<ul>{''.join(efficiencies)}</ul>" if efficiencies else "") + "</section>")
 
 
-def compensator_section(r, case, stats, directory):
+def compensator_section(r, case, directory):
     found = compensators(r, case)
     if not found:
         return ""
@@ -587,7 +578,7 @@ def report(r, binary, duration, start, log_path):
             design_section(r, case, stats),
             model_section(r, case),
             validation_section(binary, r, log_path),
-            compensator_section(r, case, stats, directory),
+            compensator_section(r, case, directory),
             joint_loads_section(r, stats, duration),
             rao_section(binary, r, case, directory),
             figures_section(r, stats, window_start, directory),

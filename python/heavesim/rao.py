@@ -14,13 +14,12 @@ bin in the sea's band, with the coherence of each estimate).
 import h5py
 import numpy as np
 
+from .result import _attributes, _text
+
 __all__ = ["Rao", "RaoChannel", "read", "figure", "COHERENCE_THRESHOLD"]
 
 COHERENCE_THRESHOLD = 0.9  # H1 points below it are drawn faint: the sea does not explain the response there
 
-
-def _text(value):
-    return value.decode() if isinstance(value, bytes) else str(value)
 
 
 class RaoChannel:
@@ -56,8 +55,7 @@ class Rao:
     def __init__(self, path):
         self.path = path
         with h5py.File(path, "r") as f:
-            self.attributes = {key: (_text(value) if isinstance(value, (bytes, str)) else value)
-                               for key, value in f.attrs.items()}
+            self.attributes = _attributes(f)
             self.period = f["period"][()]
             self.frequency = f["frequency"][()]
             self.bem_frequency = f["bem_frequency"][()] if "bem_frequency" in f else np.array([])

@@ -46,8 +46,10 @@ class RaoTable(unittest.TestCase):
         self.assertEqual(heave.unit, "m/m")
         self.assertIsNone(heave.coherence)
         self.assertIsNotNone(heave.bem_amplitude)  # the case has BEM data
-        # The complex RAO: amplitude and phase put back together.
-        numpy.testing.assert_allclose(abs(heave.complex), heave.amplitude)
+        # The complex RAO: amplitude and phase put back together, against the CSV's columns.
+        numpy.testing.assert_allclose(heave.complex, [float(r["heave amplitude [m/m]"]) *
+                                                      numpy.exp(1j * numpy.radians(float(r["heave phase [deg]"])))
+                                                      for r in rows], rtol=1e-9)
 
     def test_figure_writes_a_png(self):
         path = os.path.join(self.directory, "heave.png")
