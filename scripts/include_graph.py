@@ -41,6 +41,7 @@ KERNEL_LAYERS = [
     ("kernel/model",),
     ("kernel/algorithms",),
     ("kernel/elements",),
+    ("kernel/contact",),
     ("kernel/system",),
     ("kernel/integrators",),
     ("kernel/analysis",),

@@ -20,12 +20,12 @@ ComplementarityResult invalid(std::string message) {
 std::string entry(int i, int j) { return "(" + std::to_string(i) + ", " + std::to_string(j) + ")"; }
 }  // namespace
 
-double ComplementarityProblem::lower_bound(int i, const VectorX& z) const {
+double ComplementarityProblem::lower_bound(int i, const ConstVectorView& z) const {
   if (is_friction_row(i)) return -(*friction_coefficient)[i] * std::max(z[(*friction_normal)[i]], 0.0);
   return lower ? (*lower)[i] : 0.0;
 }
 
-double ComplementarityProblem::upper_bound(int i, const VectorX& z) const {
+double ComplementarityProblem::upper_bound(int i, const ConstVectorView& z) const {
   if (is_friction_row(i)) return (*friction_coefficient)[i] * std::max(z[(*friction_normal)[i]], 0.0);
   return upper ? (*upper)[i] : infinity;
 }
@@ -65,7 +65,7 @@ bool fits_workspace(ComplementarityResult& result, const char* solver, int capac
 }
 
 ComplementarityResult validate(const ComplementarityProblem& problem) {
-  const MatrixX& M = problem.M;
+  const ConstMatrixView& M = problem.M;
   const int n = problem.size();
   if (M.rows() != M.cols())
     return invalid("matrix M is " + std::to_string(M.rows()) + " x " + std::to_string(M.cols()) +
@@ -73,7 +73,7 @@ ComplementarityResult validate(const ComplementarityProblem& problem) {
   if (M.rows() != n)
     return invalid("vector q has " + std::to_string(n) + " entries, expected " + std::to_string(M.rows()) +
                    " (the size of M)");
-  const auto check_size = [&](const auto* vector, const char* name) -> std::string {
+  const auto check_size = [&](const auto& vector, const char* name) -> std::string {
     if (vector && vector->size() != n)
       return std::string(name) + " has " + std::to_string(vector->size()) + " entries, expected " +
              std::to_string(n);
@@ -84,7 +84,7 @@ ComplementarityResult validate(const ComplementarityProblem& problem) {
         check_size(problem.friction_normal, "friction normal index"),
         check_size(problem.friction_coefficient, "friction coefficient mu")})
     if (!error.empty()) return invalid(error);
-  if ((problem.friction_normal == nullptr) != (problem.friction_coefficient == nullptr))
+  if (problem.friction_normal.has_value() != problem.friction_coefficient.has_value())
     return invalid("friction rows need both the normal indices and the coefficients");
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i)
@@ -118,7 +118,7 @@ ComplementarityResult validate(const ComplementarityProblem& problem) {
   return result;
 }
 
-void evaluate_residual(const ComplementarityProblem& problem, const VectorX& z, Eigen::Ref<VectorX> w,
+void evaluate_residual(const ComplementarityProblem& problem, const ConstVectorView& z, VectorView w,
                        ComplementarityResult& result) {
   w.noalias() = problem.M * z;
   w += problem.q;

@@ -13,31 +13,40 @@
 //
 // Units are the caller's: in contact dynamics z are impulses [N s] and w relative
 // velocities [m/s], M = J M^-1 J^T [m/(N s^2)]. Nothing here knows of bodies or frames.
+#include <optional>
 #include <string>
 
 #include "kernel/spatial/types.hpp"
 
 namespace heavesim {
 
-/// One complementarity problem, by reference (the caller owns the arrays). Null bounds:
+/// Views the solvers read and write: a whole MatrixX / VectorX or a block of a larger
+/// one (e.g. the top-left n x n of a workspace sized for the most contacts), so that a
+/// caller whose problem size changes from step to step never reallocates.
+using ConstMatrixView = Eigen::Ref<const MatrixX>;
+using ConstVectorView = Eigen::Ref<const VectorX>;
+using VectorView = Eigen::Ref<VectorX>;
+using ConstIndexView = Eigen::Ref<const Eigen::VectorXi>;
+
+/// One complementarity problem, by reference (the caller owns the arrays). No bounds:
 /// lo = 0, hi = +inf (the plain LCP). friction_normal[i] >= 0 makes row i a friction row
 /// of the normal row friction_normal[i] with coefficient friction_coefficient[i] (both
-/// null: no friction rows; -1 in friction_normal: an ordinary row).
+/// absent: no friction rows; -1 in friction_normal: an ordinary row).
 struct ComplementarityProblem {
-  const MatrixX& M;
-  const VectorX& q;
-  const VectorX* lower = nullptr;
-  const VectorX* upper = nullptr;
-  const Eigen::VectorXi* friction_normal = nullptr;
-  const VectorX* friction_coefficient = nullptr;
+  ConstMatrixView M;
+  ConstVectorView q;
+  std::optional<ConstVectorView> lower = std::nullopt;
+  std::optional<ConstVectorView> upper = std::nullopt;
+  std::optional<ConstIndexView> friction_normal = std::nullopt;
+  std::optional<ConstVectorView> friction_coefficient = std::nullopt;
 
   int size() const { return static_cast<int>(q.size()); }
-  bool boxed() const { return lower != nullptr || upper != nullptr || has_friction(); }
-  bool has_friction() const { return friction_normal != nullptr; }
+  bool boxed() const { return lower.has_value() || upper.has_value() || has_friction(); }
+  bool has_friction() const { return friction_normal.has_value(); }
   bool is_friction_row(int i) const { return friction_normal && (*friction_normal)[i] >= 0; }
   /// The box of row i at the answer z (friction rows: +-mu_i max(z_normal, 0)).
-  double lower_bound(int i, const VectorX& z) const;
-  double upper_bound(int i, const VectorX& z) const;
+  double lower_bound(int i, const ConstVectorView& z) const;
+  double upper_bound(int i, const ConstVectorView& z) const;
 };
 
 enum class ComplementarityStatus {
@@ -84,7 +93,7 @@ bool fits_workspace(ComplementarityResult& result, const char* solver, int capac
 
 /// Fills w = M z + q (w: n entries, e.g. the head of a larger workspace vector) and sets
 /// result.residual and result.residual_absolute; allocation-free.
-void evaluate_residual(const ComplementarityProblem& problem, const VectorX& z, Eigen::Ref<VectorX> w,
+void evaluate_residual(const ComplementarityProblem& problem, const ConstVectorView& z, VectorView w,
                        ComplementarityResult& result);
 
 }  // namespace heavesim

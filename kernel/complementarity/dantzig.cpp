@@ -28,7 +28,7 @@ enum : signed char { undriven = 0, in_clamped = 1, at_lower = 2, at_upper = 3 };
 
 // Appends row j to C: the new row of L is [y^T, sqrt(M_jj - y^T y)] with L y = M_Cj.
 // False if that pivot is not positive (M_CC + j singular or indefinite).
-bool append_clamped(const MatrixX& M, DantzigWorkspace& ws, int j, double tolerance) {
+bool append_clamped(const ConstMatrixView& M, DantzigWorkspace& ws, int j, double tolerance) {
   const int c = static_cast<int>(ws.clamped.size());
   auto y = ws.gathered.head(c);
   for (int k = 0; k < c; ++k) y[k] = M(ws.clamped[k], j);
@@ -69,12 +69,12 @@ void remove_clamped(DantzigWorkspace& ws, int p, int n) {
 
 }  // namespace
 
-ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWorkspace& ws, VectorX& z,
+ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWorkspace& ws, VectorView z,
                               const DantzigOptions& options) {
   ComplementarityResult result = validate(problem);
   result.solver = ComplementaritySolver::dantzig;
   if (!result.solved()) return result;
-  const MatrixX& M = problem.M;
+  const ConstMatrixView& M = problem.M;
   const int n = problem.size();
   if (!fits_workspace(result, "Dantzig", ws.capacity, n, z.size(), n)) return result;
   const double matrix_scale = n ? M.lpNorm<Eigen::Infinity>() : 0.0;

@@ -43,7 +43,7 @@ struct DantzigWorkspace {
 
 /// Solves the boxed MLCP (lo <= 0 <= hi on every row, as the method starts from z = 0;
 /// friction boxes always qualify). M must be symmetric (status unsupported otherwise).
-ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWorkspace& workspace, VectorX& z,
+ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWorkspace& workspace, VectorView z,
                               const DantzigOptions& options = {});
 
 }  // namespace heavesim

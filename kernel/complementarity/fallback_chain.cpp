@@ -3,7 +3,7 @@
 namespace heavesim {
 
 ComplementarityResult solve_complementarity(const ComplementarityProblem& problem, ComplementarityWorkspace& ws,
-                                            VectorX& z, const FallbackChainOptions& options) {
+                                            VectorView z, const FallbackChainOptions& options) {
   ComplementarityResult result = validate(problem);
   if (!result.solved()) return result;
   std::string failures;

@@ -32,7 +32,7 @@ struct ComplementarityWorkspace {
 };
 
 ComplementarityResult solve_complementarity(const ComplementarityProblem& problem,
-                                            ComplementarityWorkspace& workspace, VectorX& z,
+                                            ComplementarityWorkspace& workspace, VectorView z,
                                             const FallbackChainOptions& options = {});
 
 }  // namespace heavesim

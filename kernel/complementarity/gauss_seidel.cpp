@@ -10,7 +10,7 @@ GaussSeidelWorkspace::GaussSeidelWorkspace(int size)
       upper(VectorX::Constant(size, std::numeric_limits<double>::infinity())),
       sweep(size) {}
 
-ComplementarityResult gauss_seidel(const MatrixX& A, const VectorX& b, GaussSeidelWorkspace& ws, VectorX& x,
+ComplementarityResult gauss_seidel(const MatrixX& A, const VectorX& b, GaussSeidelWorkspace& ws, VectorView x,
                                    const ProjectedGaussSeidelOptions& options) {
   if (b.size() != A.rows() || ws.minus_b.size() != b.size()) {
     ComplementarityResult result;
@@ -23,7 +23,7 @@ ComplementarityResult gauss_seidel(const MatrixX& A, const VectorX& b, GaussSeid
   // A x = b is w = A x - b = 0 with x free: the box (-inf, +inf) makes the projection the
   // identity and the natural-map residual |A x - b|_inf.
   ws.minus_b = -b;
-  const ComplementarityProblem problem{A, ws.minus_b, &ws.lower, &ws.upper};
+  const ComplementarityProblem problem{A, ws.minus_b, ws.lower, ws.upper};
   ComplementarityResult result = projected_gauss_seidel(problem, ws.sweep, x, options);
   result.solver = ComplementaritySolver::gauss_seidel;
   return result;

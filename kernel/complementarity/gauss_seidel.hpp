@@ -17,7 +17,7 @@ struct GaussSeidelWorkspace {
 
 /// x: the start (used as is when options.warm_start, else 0) and the answer. The residual
 /// reported is |A x - b|_inf (/ |b|_inf for the relative one).
-ComplementarityResult gauss_seidel(const MatrixX& A, const VectorX& b, GaussSeidelWorkspace& workspace, VectorX& x,
+ComplementarityResult gauss_seidel(const MatrixX& A, const VectorX& b, GaussSeidelWorkspace& workspace, VectorView x,
                                    const ProjectedGaussSeidelOptions& options = {});
 
 }  // namespace heavesim

@@ -26,8 +26,8 @@ namespace {
 
 // The LCP Lemke works on: w = A z + b of size N (the problem itself, or its box expansion).
 struct Tableau {
-  const MatrixX& A;
-  const VectorX& b;
+  const ConstMatrixView& A;
+  const ConstVectorView& b;
   int N;
   int covering_code() const { return 2 * N; }
   LemkeVariable variable(int code) const {
@@ -135,7 +135,7 @@ void refine(const Tableau& t, LemkeWorkspace& ws) {
 
 }  // namespace
 
-ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspace& ws, VectorX& z,
+ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspace& ws, VectorView z,
                             const LemkeOptions& options) {
   ComplementarityResult result = validate(problem);
   result.solver = ComplementaritySolver::lemke;
@@ -187,9 +187,9 @@ ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspac
     }
   }
   // Views of the LCP solved: the problem itself, or the expansion in the workspace
-  // (whose first N x N block is used; a MatrixX reference keeps the column access plain).
-  const MatrixX& A = problem.boxed() ? ws.expanded_matrix : problem.M;
-  const VectorX& b = problem.boxed() ? ws.expanded_vector : problem.q;
+  // (whose first N x N block is used).
+  const ConstMatrixView A = problem.boxed() ? ConstMatrixView(ws.expanded_matrix) : problem.M;
+  const ConstVectorView b = problem.boxed() ? ConstVectorView(ws.expanded_vector) : problem.q;
   const Tableau t{A, b, N};
   if (options.covering_vector) ws.covering.head(N) = *options.covering_vector;
   else ws.covering.head(N).setOnes();

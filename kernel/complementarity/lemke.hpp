@@ -67,7 +67,7 @@ struct LemkeWorkspace {
 /// failure other than iteration_limit / ray_termination, where it holds the last basis).
 /// Rows must have a finite lower bound (lo = 0 for the LCP); friction rows are refused
 /// (status unsupported: their bounds depend on z).
-ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspace& workspace, VectorX& z,
+ComplementarityResult lemke(const ComplementarityProblem& problem, LemkeWorkspace& workspace, VectorView z,
                             const LemkeOptions& options = {});
 
 }  // namespace heavesim

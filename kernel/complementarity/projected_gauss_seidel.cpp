@@ -9,7 +9,7 @@ ProjectedGaussSeidelWorkspace::ProjectedGaussSeidelWorkspace(int size)
     : capacity(size), transposed(size, size), w(size) {}
 
 ComplementarityResult projected_gauss_seidel(const ComplementarityProblem& problem,
-                                             ProjectedGaussSeidelWorkspace& ws, VectorX& z,
+                                             ProjectedGaussSeidelWorkspace& ws, VectorView z,
                                              const ProjectedGaussSeidelOptions& options) {
   ComplementarityResult result = validate(problem);
   result.solver = ComplementaritySolver::projected_gauss_seidel;

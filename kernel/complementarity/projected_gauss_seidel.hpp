@@ -26,7 +26,7 @@ struct ProjectedGaussSeidelWorkspace {
 };
 
 ComplementarityResult projected_gauss_seidel(const ComplementarityProblem& problem,
-                                             ProjectedGaussSeidelWorkspace& workspace, VectorX& z,
+                                             ProjectedGaussSeidelWorkspace& workspace, VectorView z,
                                              const ProjectedGaussSeidelOptions& options = {});
 
 }  // namespace heavesim

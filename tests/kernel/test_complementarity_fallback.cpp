@@ -86,18 +86,18 @@ TEST(ComplementarityFallback, RefusesInvalidInputNamingTheEntry) {
   q_infinite[1] = std::numeric_limits<double>::infinity();
   expect_invalid(checked({square, q_infinite}), "q(1)");
   const VectorX lo = Eigen::Vector3d(0, 1, 0), hi = Eigen::Vector3d(1, 0.5, 1);
-  expect_invalid(checked({square, q, &lo, &hi}), "row 1: bounds [1.000000, 0.500000]");
+  expect_invalid(checked({square, q, lo, hi}), "row 1: bounds [1.000000, 0.500000]");
   const VectorX short_lo = VectorX::Zero(2);
-  expect_invalid(checked({square, q, &short_lo}), "lower bound lo has 2 entries, expected 3");
+  expect_invalid(checked({square, q, short_lo}), "lower bound lo has 2 entries, expected 3");
   Eigen::VectorXi normal(3);
   normal << -1, 0, 0;
   const VectorX negative_mu = Eigen::Vector3d(0, 0.3, -0.1);
-  expect_invalid(checked({square, q, nullptr, nullptr, &normal, &negative_mu}),
+  expect_invalid(checked({square, q, std::nullopt, std::nullopt, normal, negative_mu}),
                  "friction row 2: coefficient mu = -0.100000, expected finite and >= 0");
   Eigen::VectorXi out_of_range(3);
   out_of_range << -1, 7, 0;
   const VectorX mu = VectorX::Constant(3, 0.3);
-  expect_invalid(checked({square, q, nullptr, nullptr, &out_of_range, &mu}), "friction row 1: normal index 7");
+  expect_invalid(checked({square, q, std::nullopt, std::nullopt, out_of_range, mu}), "friction row 1: normal index 7");
 }
 
 TEST(ComplementarityFallback, LemkeRefusesABadCoveringVector) {

@@ -58,7 +58,7 @@ TEST(Dantzig, AgreesWithLemkeAndProjectedGaussSeidelOnBoxedProblems) {
       lo[i] = i % 4 == 0 ? 0.0 : -unit(random);
       hi[i] = i % 5 == 0 ? infinity : unit(random);
     }
-    const ComplementarityProblem problem{sample.M, q, &lo, &hi};
+    const ComplementarityProblem problem{sample.M, q, lo, hi};
     DantzigWorkspace dantzig_workspace(n);
     LemkeWorkspace lemke_workspace(n);
     ProjectedGaussSeidelWorkspace pgs_workspace(n);
@@ -93,7 +93,7 @@ TEST(Dantzig, ScalesTheFrictionBoxByTheNormalImpulse) {
   for (const Eigen::Vector2d& tangential : {Eigen::Vector2d(0.5, -1.0), Eigen::Vector2d(2.0, -0.3)}) {
     VectorX q(3);
     q << tangential, v_n;
-    const ComplementarityProblem problem{M, q, nullptr, nullptr, &normal, &coefficient};
+    const ComplementarityProblem problem{M, q, std::nullopt, std::nullopt, normal, coefficient};
     const double p_n = -m * v_n;
     VectorX expected(3);
     for (int k = 0; k < 2; ++k)

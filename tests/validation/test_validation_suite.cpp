@@ -27,7 +27,7 @@ INSTANTIATE_TEST_SUITE_P(Compensators, ValidationSuite, ::testing::Values("C1", 
 INSTANTIATE_TEST_SUITE_P(Benchmarks, ValidationSuite, ::testing::Values("A01", "A03", "A04", "A05", "L5"));
 INSTANTIATE_TEST_SUITE_P(Kinematics, ValidationSuite, ::testing::Values("L3", "L6", "L7", "L8"));
 INSTANTIATE_TEST_SUITE_P(Statics, ValidationSuite, ::testing::Values("S1", "S2"));
-INSTANTIATE_TEST_SUITE_P(Complementarity, ValidationSuite, ::testing::Values("P1", "P2"));
+INSTANTIATE_TEST_SUITE_P(Complementarity, ValidationSuite, ::testing::Values("P1", "P2", "P3", "P4"));
 INSTANTIATE_TEST_SUITE_P(Hydro, ValidationSuite, ::testing::Values("H1", "H2", "H3", "H4", "H5", "H6", "H7"));
 
 }  // namespace

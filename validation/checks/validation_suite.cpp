@@ -72,6 +72,11 @@ const std::vector<ValidationCheck>& validation_checks() {
        check_p1_lcp_textbook},
       {"P2", "random SPD and P-matrix LCPs (n = 10..500, answer chosen first): Lemke and Dantzig residuals",
        check_p2_lcp_random},
+      {"P3", "box on an incline with Coulomb friction (contact stepping): slides with g (sin - mu cos) below "
+             "tan(slope), sticks above",
+       check_p3_block_on_incline},
+      {"P4", "20-cube stacks at rest, uniform and 1:100 masses, 10 s: face loads vs the weights above, no drift",
+       check_p4_box_stacks},
   };
   return checks;
 }

@@ -90,6 +90,8 @@ std::vector<ValidationRow> check_s1_spring_crane();
 std::vector<ValidationRow> check_s2_rig_statics();
 std::vector<ValidationRow> check_p1_lcp_textbook();
 std::vector<ValidationRow> check_p2_lcp_random();
+std::vector<ValidationRow> check_p3_block_on_incline();
+std::vector<ValidationRow> check_p4_box_stacks();
 std::vector<ValidationRow> check_m1_mksim_import();
 
 }  // namespace heavesim::validation

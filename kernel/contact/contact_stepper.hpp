@@ -1,0 +1,111 @@
+#pragma once
+// Velocity-level time stepping with unilateral contact, Coulomb friction and joint stops
+// (Stewart & Trinkle 1996; Anitescu & Potra 1997), the scheme of Bullet's MLCP solver,
+// ODE's dWorldStep and Erleben's Physics-Based Animation notes. One step of h:
+//
+//   v*  = v + h M^-1 (tau - C(q, v) + generalized gravity and external loads)
+//   v+  = v* + M^-1 J^T z                  (z: impulses, N s or N m s)
+//   w   = J v+ + b = A z + (J v* + b),   A = J M^-1 J^T (+ eps I)
+//   normal and stop rows: 0 <= z  complementary to  w >= 0
+//   friction rows t1, t2: |z_t| <= mu z_n, and w_t = 0 unless z_t is at its bound
+//   q+  = q (+) h v+                       (on the configuration manifold; a free joint's
+//                                           position along its parent-axes velocity)
+//
+// b holds the gap: b = gap / h lets a gap close exactly within the step but never pulls;
+// an overlap is removed by the fraction `stabilization` per step; an impact faster than
+// `restitution_threshold` leaves with e times its approach speed (Newton's law at the
+// velocity level). The friction box [-mu z_n, mu z_n] on two tangents is the
+// four-facet friction pyramid (ODE's dContactApprox1, Bullet's limitDependency): a
+// boxed MLCP that the Dantzig solver takes (kernel/complementarity). The derivation,
+// the choices and their limits: docs/physics/contact.md.
+//
+// The model's own constraints (loop joints, couplers, drivers: a deck moved by a
+// prescribed motion) enter as free rows, J_c v+ = -Phi(q, t + h) / h. Every buffer is
+// sized at construction for `max_contacts` points, so a step does not allocate.
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "kernel/algorithms/inverse_dynamics.hpp"
+#include "kernel/complementarity/fallback_chain.hpp"
+#include "kernel/contact/contact_detection.hpp"
+
+namespace heavesim {
+
+struct ContactStepOptions {
+  double time_step = 1e-3;             ///< h [s]
+  double stabilization = 0.2;          ///< fraction of an overlap removed per step (ODE's ERP), in [0, 1]
+  double restitution_threshold = 0.05; ///< m/s (rad/s for stops): slower impacts do not bounce
+  /// eps = regularization x mean(diag A) added to A's diagonal (constraint-force
+  /// mixing): with four points under a box face or a stack, J has dependent rows and A
+  /// is singular; eps makes it positive definite at the cost of a contact velocity of
+  /// eps z (1e-12 of the impulse scale; docs/physics/contact.md).
+  double regularization = 1e-10;
+  /// Dantzig first (exact, fast on the positive definite A), then projected Gauss-Seidel
+  /// (warm-started from the last step's impulses when the contact set is unchanged),
+  /// then Lemke (frictionless problems only).
+  FallbackChainOptions solvers = default_solvers();
+  static FallbackChainOptions default_solvers();
+};
+
+struct ContactStepReport {
+  ComplementarityResult solve;  ///< status, the solver that ran, its residual (solve.attempts > 1: a fallback)
+  int constraint_rows = 0;      ///< the model's constraint rows (free rows, first)
+  int contacts = 0;             ///< contact points in the problem
+  int active_stops = 0;         ///< joint-stop rows in the problem
+  int rows = 0;                 ///< size of the complementarity problem
+  bool ok() const { return rows == 0 || solve.solved(); }
+};
+
+class ContactStepper {
+ public:
+  /// Throws ParameterError if check_contact_model fails or the options are out of range.
+  ContactStepper(const Model& model, ContactModel contacts, int max_contacts, ContactStepOptions options = {});
+
+  /// Advances (q, v) from time t [s] by one step of options().time_step under the joint
+  /// forces `tau` (nv) and the external wrenches per link (world, about the origin). On a
+  /// solver failure (report.ok() false) q and v are left as they were.
+  ContactStepReport step(Data& data, double t, VectorX& q, VectorX& v, const VectorX& tau,
+                         ExternalForces external = {});
+
+  const ContactModel& contact_model() const { return contacts_; }
+  const ContactStepOptions& options() const { return options_; }
+  /// The contact points of the last step, and the impulse [N s, world] each applied to
+  /// its pair's geometry a (b received the opposite).
+  std::span<const ContactPoint> contacts() const { return {points_.data(), static_cast<size_t>(contact_count_)}; }
+  Vector3 contact_impulse_world(int k) const;
+  /// The impulse of joint stop s in the last step [N s or N m s], > 0 away from the bound
+  /// reached (0 if the stop was not touched).
+  double stop_impulse(int s) const;
+
+ private:
+  void add_point_row(int row, int link, const Vector3& point, const Vector3& direction, double sign, const Data& data);
+  /// Calls visit(c) once for every column c of J that row `row` can have nonzero.
+  template <typename Visit>
+  void for_each_row_column(int row, Visit&& visit) const;
+
+  const Model& model_;
+  ContactModel contacts_;
+  ContactStepOptions options_;
+  int capacity_rows_ = 0;
+  std::vector<int> free_joints_;        ///< joints of type free (stepped in their parent's axes)
+  std::vector<ContactPoint> points_;
+  int contact_count_ = 0;
+  std::vector<int> contact_first_row_;  ///< per point: its normal row (tangents follow if mu > 0)
+  std::vector<int> stop_row_;           ///< per stop: its row, -1 if not in the problem
+  std::vector<double> stop_sign_;       ///< per stop: +1 lower bound reached, -1 upper
+  int previous_rows_ = -1;
+  VectorX zero_acceleration_, free_velocity_, velocity_next_;
+  VectorX configuration_next_;
+  std::vector<int> coordinate_parent_;  ///< velocity_coordinate_parents(model)
+  MatrixX mass_factor_;      ///< nv x nv: L of M = L^T L (ancestor entries only)
+  MatrixX jacobian_;         ///< rows x nv
+  std::vector<std::pair<int, int>> row_links_;  ///< per row: the two links whose chains it touches
+  MatrixX minv_jacobian_t_;  ///< nv x rows: M^-1 J^T
+  MatrixX delassus_;         ///< rows x rows: A
+  VectorX offset_, impulses_, previous_impulses_, friction_coefficient_, lower_, upper_;
+  Eigen::VectorXi friction_normal_;
+  ComplementarityWorkspace workspace_;
+};
+
+}  // namespace heavesim

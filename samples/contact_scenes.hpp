@@ -1,0 +1,48 @@
+#pragma once
+// Contact scenes for the tests, the validation checks (P3, P4) and the benchmarks:
+// boxes and spheres on free joints above a ground plane. Every body frame is the body's
+// centre of mass with principal axes; q is the free joints' (position [m, world],
+// quaternion w, x, y, z) per body, v their (angular; linear) in body axes.
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "kernel/contact/contact_model.hpp"
+#include "kernel/model/model.hpp"
+
+namespace heavesim::samples {
+
+struct ContactScene {
+  std::shared_ptr<const Model> model;
+  ContactModel contacts;
+  VectorX q;                    ///< initial configuration
+  VectorX v;                    ///< initial velocity (zero unless said)
+  std::vector<double> masses;   ///< kg, per body in link order (link i+1 = body i)
+};
+
+/// `count` cubes of edge `edge` [m] stacked on the ground plane z = 0, touching exactly,
+/// masses from `bottom_mass` [kg] geometrically to mass_ratio x bottom_mass at the top;
+/// one pair per touching faces (4 corner points each) with Coulomb coefficient `mu`.
+ContactScene box_stack(int count, double edge, double bottom_mass, double mass_ratio, double mu);
+
+/// A box (half sizes `half_extents` [m], `mass` [kg]) resting on an incline through the
+/// origin, turned by `slope` [rad] about the world y axis (down-slope: the plane's +x,
+/// (cos slope, 0, -sin slope)); Coulomb coefficient mu.
+ContactScene box_on_incline(double slope, double mu, const Vector3& half_extents, double mass);
+
+/// A solid sphere (radius, mass) with its centre `height` [m] above the ground plane
+/// z = 0 (height = radius: resting on it), friction mu and restitution e.
+ContactScene sphere_on_plane(double radius, double mass, double height, double mu, double restitution);
+
+/// A deck moved by prescribed motions (regular-sea surge and heave of a platform):
+///   surge x_d(t) = surge_amplitude sin(omega t), heave z_d(t) = heave_amplitude sin(omega t + phase)
+/// [m, rad/s, rad] through the joint drivers "surge" (prismatic x, ground -> "carriage") and
+/// "heave" (prismatic z, carriage -> "deck"); the deck's top is the plane z = z_d. A box
+/// (half sizes `half_extents`, `mass`) rests on it, moving with it at t = 0; Coulomb mu.
+struct MovingDeck {
+  double surge_amplitude = 3.0, heave_amplitude = 2.0, omega = 1.0, phase = M_PI / 3;
+};
+ContactScene box_on_moving_deck(const MovingDeck& deck, double mu, const Vector3& half_extents, double mass);
+
+}  // namespace heavesim::samples
