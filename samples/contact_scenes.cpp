@@ -52,7 +52,7 @@ ContactScene one_body_on_plane(const std::string& body, const Inertia& inertia, 
   scene.model = std::make_shared<const Model>(builder.build());
   scene.masses = {inertia.mass()};
   scene.contacts.geometries = {ground_plane(turn.toRotationMatrix()), on_body(*scene.model, body, shape)};
-  scene.contacts.pairs.push_back({1, 0, mu, restitution});
+  scene.contacts.pairs.push_back({body + "_on_ground", 1, 0, mu, restitution});
   scene.q = scene.model->neutral_configuration();
   scene.v = VectorX::Zero(scene.model->nv);
   place(*scene.model, scene.q, body, position, turn);
@@ -83,7 +83,7 @@ ContactScene box_stack(int count, double edge, double bottom_mass, double mass_r
     box.half_extents = half;
     scene.contacts.geometries.push_back(on_body(*scene.model, name, box));
     // Below it: the ground (geometry 0) or the box before (geometry i).
-    scene.contacts.pairs.push_back({i + 1, i, mu, 0.0});
+    scene.contacts.pairs.push_back({name + "_below", i + 1, i, mu, 0.0});
     place(*scene.model, scene.q, name, Vector3(0, 0, edge * (i + 0.5)), Eigen::Quaterniond::Identity());
   }
   return scene;
@@ -141,7 +141,7 @@ ContactScene box_on_moving_deck(const MovingDeck& deck, double mu, const Vector3
   box.kind = ContactShapeKind::box;
   box.half_extents = half_extents;
   scene.contacts.geometries = {top, on_body(*scene.model, "box", box)};
-  scene.contacts.pairs.push_back({1, 0, mu, 0.0});
+  scene.contacts.pairs.push_back({"box_on_deck", 1, 0, mu, 0.0});
   const Model& model = *scene.model;
   scene.q = model.neutral_configuration();
   scene.v = VectorX::Zero(model.nv);

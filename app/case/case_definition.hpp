@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "app/case/contact_definition.hpp"
 #include "app/case/hydro_definition.hpp"
 #include "app/case/input_error.hpp"
 #include "app/forces/force_kinds.hpp"
@@ -91,6 +92,7 @@ struct CaseDefinition {
   std::vector<ExpressionConstraintDefinition> expression_constraints;  // constraints[i] of type expression
   std::vector<DriverDefinition> drivers;
   std::vector<ForceDefinition> forces;              // from forces:, in declaration order (app/forces/)
+  ContactDefinition contacts;                       // contacts: (none unless declared)
   WaterDefinition water;                            // environment.water_density, water_depth
   WaveDefinition waves;                             // waves: (none unless declared)
   std::map<std::string, JointInitialState> initial_states;  // by joint name

@@ -12,6 +12,7 @@
 #include "app/forces/force_registry.hpp"
 #include "app/case/hydro_reader.hpp"
 #include "app/case/node_reader.hpp"
+#include "app/case/contact_reader.hpp"
 #include "app/case/driver_reader.hpp"
 #include "app/case/expression_constraint_reader.hpp"
 #include "app/case/frame_reader.hpp"
@@ -347,12 +348,13 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
   reader.expect_section("solver");
   SolverSettings& solver = definition.solver;
   if (auto integrator = reader.optional("integrator")) {
-    const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida", "hht"});
+    const std::string method = integrator->choice({"rk4", "dopri5", "verner6", "fehlberg8", "ida", "hht", "contact"});
     solver.integrator.method = method == "rk4"         ? IntegrationMethod::rk4
                                : method == "dopri5"    ? IntegrationMethod::dopri5
                                : method == "verner6"   ? IntegrationMethod::verner6
                                : method == "fehlberg8" ? IntegrationMethod::fehlberg8
                                : method == "hht"       ? IntegrationMethod::hht
+                               : method == "contact"   ? IntegrationMethod::contact
                                                        : IntegrationMethod::ida;
   }
   solver.t_start = reader.number_or("t_start", 0.0);
@@ -364,9 +366,9 @@ void read_solver(const NodeReader& reader, CaseDefinition& definition) {
     solver.integrator.step = step->positive_number();
     if (solver.integrator.step > solver.t_end - solver.t_start)
       step->fail(fmt::format("a step of {:g} s longer than the run", solver.integrator.step), "step <= t_end - t_start");
-    if (solver.integrator.method == IntegrationMethod::rk4 || solver.integrator.method == IntegrationMethod::hht)
+    if (is_fixed_step(solver.integrator.method))
       check_run_count(*step, definition, solver.integrator.step, RunLimits::max_steps, "fixed steps");
-  } else if (solver.integrator.method == IntegrationMethod::rk4 || solver.integrator.method == IntegrationMethod::hht) {
+  } else if (is_fixed_step(solver.integrator.method)) {
     reader["step"];  // required for the fixed-step methods: raises the missing-key error
   }
   if (auto alpha = reader.optional("hht_alpha")) {
@@ -525,7 +527,15 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   if (auto section = root.optional("constraints")) read_constraints(*section, definition, names, expressions);
   if (auto section = root.optional("drivers")) read_drivers(*section, definition, names, expressions);
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
+  if (auto section = root.optional("contacts")) read_contacts(*section, definition);
   read_solver(root["solver"], definition);
+  if (!definition.contacts.empty() && definition.solver.integrator.method != IntegrationMethod::contact) {
+    const std::optional<NodeReader> integrator = root["solver"].optional("integrator");
+    (integrator ? *integrator : root["contacts"])
+        .fail("contacts with the integrator '" + integration_method_name(definition.solver.integrator.method) + "'",
+              "solver.integrator: contact (velocity-level contact stepping; the event-located treatment for the "
+              "other integrators is not built yet)");
+  }
   read_output(root.optional("output"), root["solver"], definition);
   if (auto section = root.optional("kinematics")) read_kinematics(*section, definition.kinematics);
   if (auto initial = root.optional("initial")) definition.initial_static = initial->choice({"given", "static"}) == "static";

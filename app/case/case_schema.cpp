@@ -23,6 +23,7 @@ constexpr KeySpec root_keys[] = {
     {"constraints", "list", "–", "none", "distance, coupler and expression constraints"},
     {"drivers", "list", "–", "none", "prescribed motion of joint coordinates, body points, distances, angles"},
     {"forces", "list", "–", "none", "force elements"},
+    {"contacts", "map", "–", "none", "contact shapes, pairs and joint stops (integrator `contact`)"},
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
     {"kinematics", "map", "–", "see below", "settings of `heavesim kinematics`"},
@@ -135,10 +136,10 @@ constexpr KeySpec angle_driver_keys[] = {
 };
 
 constexpr KeySpec solver_keys[] = {
-    {"integrator", "choice", "–", "`ida`", "rk4, dopri5, verner6, fehlberg8, ida, hht"},
+    {"integrator", "choice", "–", "`ida`", "rk4, dopri5, verner6, fehlberg8, ida, hht, contact"},
     {"t_start", "number", "s", "0", "start time"},
     {"t_end", "number", "s", "required", "end time"},
-    {"step", "number", "s", "required for `rk4` and `hht`", "fixed step"},
+    {"step", "number", "s", "required for `rk4`, `hht` and `contact`", "fixed step"},
     {"rtol", "number", "–", "1e-8", "relative tolerance"},
     {"atol", "number", "–", "1e-10", "absolute tolerance"},
     {"max_step", "number", "s", "0 (no limit)", "largest adaptive step"},
@@ -147,6 +148,39 @@ constexpr KeySpec solver_keys[] = {
     {"linear_solver", "choice", "–", "`dense`", "dense or sparse"},
     {"constraint_tolerance", "number", "m or rad", "1e-10", "largest |Phi| accepted"},
     {"hht_alpha", "number", "–", "0", "HHT numerical damping"},
+};
+
+constexpr KeySpec contacts_keys[] = {
+    {"margin", "number", "m", "0.001", "points within this gap stay in the problem"},
+    {"geometries", "list", "–", "none", "shapes on bodies"},
+    {"pairs", "list", "–", "none", "geometry pairs checked for contact"},
+    {"joint_stops", "list", "–", "none", "one-sided stops on 1-DoF joints"},
+};
+
+constexpr KeySpec contact_geometry_keys[] = {
+    {"name", "text", "–", "required", "unique among the geometries"},
+    {"body", "text", "–", "required", "the body it is fixed on (`ground` allowed)"},
+    {"shape", "choice", "–", "required", "sphere, box, cylinder or plane"},
+    {"frame", "map", "–", "identity", "the shape frame in the body frame (`frame` keys)"},
+    {"radius", "number", "m", "required: sphere, cylinder", "radius (> 0)"},
+    {"half_length", "number", "m", "required: cylinder", "half length along the frame's z (> 0)"},
+    {"half_extents", "list", "m", "required: box", "half sizes along x, y, z (> 0)"},
+};
+
+constexpr KeySpec contact_pair_keys[] = {
+    {"name", "text", "–", "`<a>_on_<b>`", "names the output channels"},
+    {"a", "text", "–", "required", "geometry pushed along the normal"},
+    {"b", "text", "–", "required", "the other geometry"},
+    {"friction_coefficient", "number", "–", "0", "Coulomb mu (≥ 0)"},
+    {"restitution", "number", "–", "0", "Newton's e in [0, 1]"},
+};
+
+constexpr KeySpec joint_stop_keys[] = {
+    {"name", "text", "–", "`<joint>_stop`", "names the output channel"},
+    {"joint", "text", "–", "required", "a revolute or prismatic joint"},
+    {"lower", "number", "m or rad", "none (one bound required)", "lower bound"},
+    {"upper", "number", "m or rad", "none", "upper bound (> lower)"},
+    {"restitution", "number", "–", "0", "Newton's e in [0, 1]"},
 };
 
 constexpr KeySpec output_keys[] = {
@@ -269,6 +303,10 @@ constexpr SchemaSection fixed_sections[] = {
     {"absolute_driver", absolute_driver_keys},
     {"distance_driver", distance_driver_keys},
     {"angle_driver", angle_driver_keys},
+    {"contacts", contacts_keys},
+    {"contact_geometry", contact_geometry_keys},
+    {"contact_pair", contact_pair_keys},
+    {"joint_stop", joint_stop_keys},
     {"solver", solver_keys},
     {"output", output_keys},
     {"kinematics", kinematics_keys},

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "app/scene/contact_scene.hpp"
 #include "app/scene/hydro_scene.hpp"
 #include "app/scene/run_size.hpp"
 
@@ -146,6 +147,7 @@ Scene build_scene(const CaseDefinition& definition) {
   context.set_initial_configuration(q0);
   build_forces(BuildStage::on_assembled, context);
   build_forces(BuildStage::compensators, context);
+  build_contacts(definition, *scene.system);
   for (const auto& check : context.after_build) check();
   scene.initial_state = scene.system->initial_state(q0, v0);
   if (definition.initial_static) {

@@ -42,7 +42,7 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
   const SolverSettings& solver = definition.solver;
   const IntegratorSettings& integrator = solver.integrator;
   fmt::print("solver: {} ", integration_method_name(integrator.method));
-  if (integrator.method == IntegrationMethod::rk4)
+  if (is_fixed_step(integrator.method))
     fmt::print("step {:g} s", integrator.step);
   else
     fmt::print("rtol {:g}, atol {:g}", integrator.relative_tolerance, integrator.absolute_tolerance);
@@ -53,8 +53,11 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
              output.joints ? " joints" : "", output.reactions ? " reactions (one extra RNEA pass per sample)" : "",
              output.energy ? " energy" : "");
   fmt::print("state size {}: evaluated per step: kinematics, {}, {}\n", scene.system->size(),
-             model.has_constraints() ? "CRBA + constrained KKT solve (projection after explicit steps; IDA: "
-                                       "GGL index-2 residual, one RNEA pass)"
+             integrator.method == IntegrationMethod::contact
+                 ? "RNEA bias, CRBA and its tree-sparse L^T L, one complementarity problem of impulses over the "
+                   "contact points, stops and constraints"
+             : model.has_constraints() ? "CRBA + constrained KKT solve (projection after explicit steps; IDA: "
+                                         "GGL index-2 residual, one RNEA pass)"
              : solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA"
                                                                           : "CRBA + RNEA",
              springs + limits ? "joint elements" : "no joint elements");

@@ -1,6 +1,19 @@
 #include "kernel/complementarity/fallback_chain.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 namespace heavesim {
+
+namespace {
+
+std::string format_residual(double residual) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", residual);
+  return text;
+}
+
+}  // namespace
 
 ComplementarityResult solve_complementarity(const ComplementarityProblem& problem, ComplementarityWorkspace& ws,
                                             VectorView z, const FallbackChainOptions& options) {
@@ -23,6 +36,9 @@ ComplementarityResult solve_complementarity(const ComplementarityProblem& proble
     }
     failures += std::string(failures.empty() ? "" : "; ") + to_string(result.solver) + ": " +
                 to_string(result.status);
+    // The residual its answer left, where it produced one (a caller reports the closest).
+    if (result.status != ComplementarityStatus::unsupported && std::isfinite(result.residual))
+      failures += ", residual " + format_residual(result.residual);
   }
   result.message = "no solver of the chain solved the problem (" + failures + "); last: " + result.message;
   return result;

@@ -210,6 +210,18 @@ int kind_rank(ContactShapeKind kind) {
 
 }  // namespace
 
+int max_contact_points(const ContactModel& contacts) {
+  int points = 0;
+  for (const ContactPair& pair : contacts.pairs) {
+    const ContactShapeKind a = contacts.geometries[pair.geometry_a].shape.kind;
+    const ContactShapeKind b = contacts.geometries[pair.geometry_b].shape.kind;
+    if (a == ContactShapeKind::sphere || b == ContactShapeKind::sphere) points += 1;
+    else if (a == ContactShapeKind::plane || b == ContactShapeKind::plane) points += 8;
+    else points += 16;
+  }
+  return points;
+}
+
 int detect_contacts(const Model& model, const Data& data, const ContactModel& contacts, std::span<ContactPoint> out) {
   (void)model;
   int count = 0;

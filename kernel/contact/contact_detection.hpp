@@ -29,8 +29,9 @@ struct ContactPoint {
   double gap = 0.0;                          ///< m: signed distance of the surfaces along n
 };
 
-/// The most points one pair can produce (box-box: 8 corners each way).
-inline constexpr int max_points_per_pair = 16;
+/// The most points the narrow phase can produce for all pairs of `contacts` at once
+/// (per pair: 1 with a sphere; 8 for a box or a cylinder on a plane; 16 for two boxes).
+int max_contact_points(const ContactModel& contacts);
 
 /// Writes the contact points of every pair with gap < contacts.margin into `out`
 /// (positions from `data`'s position stage) and returns how many; stops at out.size()

@@ -35,6 +35,7 @@ struct ContactGeometry {
 /// Two geometries that are checked for contact (a and b by index into geometries), with
 /// the Coulomb coefficient mu >= 0 and Newton's restitution 0 <= e <= 1 of their impacts.
 struct ContactPair {
+  std::string name;  ///< for outputs and messages
   int geometry_a = 0;
   int geometry_b = 0;
   double friction_coefficient = 0.0;
@@ -45,6 +46,7 @@ struct ContactPair {
 /// coordinate stays within [lower, upper] (m or rad; either may be infinite), by an
 /// impulse when it reaches a bound, with restitution e. The compensator's stroke ends.
 struct JointStop {
+  std::string name;  ///< for outputs and messages
   int joint = 0;
   double lower = 0.0;
   double upper = 0.0;

@@ -33,7 +33,6 @@
 namespace heavesim {
 
 struct ContactStepOptions {
-  double time_step = 1e-3;             ///< h [s]
   double stabilization = 0.2;          ///< fraction of an overlap removed per step (ODE's ERP), in [0, 1]
   double restitution_threshold = 0.05; ///< m/s (rad/s for stops): slower impacts do not bounce
   /// eps = regularization x mean(diag A) added to A's diagonal (constraint-force
@@ -54,7 +53,7 @@ struct ContactStepReport {
   int contacts = 0;             ///< contact points in the problem
   int active_stops = 0;         ///< joint-stop rows in the problem
   int rows = 0;                 ///< size of the complementarity problem
-  bool ok() const { return rows == 0 || solve.solved(); }
+  bool ok() const { return solve.solved(); }  ///< a step without rows counts as solved
 };
 
 class ContactStepper {
@@ -62,10 +61,10 @@ class ContactStepper {
   /// Throws ParameterError if check_contact_model fails or the options are out of range.
   ContactStepper(const Model& model, ContactModel contacts, int max_contacts, ContactStepOptions options = {});
 
-  /// Advances (q, v) from time t [s] by one step of options().time_step under the joint
+  /// Advances (q, v) from time t [s] by one step of h [s, > 0] under the joint
   /// forces `tau` (nv) and the external wrenches per link (world, about the origin). On a
   /// solver failure (report.ok() false) q and v are left as they were.
-  ContactStepReport step(Data& data, double t, VectorX& q, VectorX& v, const VectorX& tau,
+  ContactStepReport step(Data& data, double t, double h, VectorX& q, VectorX& v, const VectorX& tau,
                          ExternalForces external = {});
 
   const ContactModel& contact_model() const { return contacts_; }
@@ -77,9 +76,16 @@ class ContactStepper {
   /// The impulse of joint stop s in the last step [N s or N m s], > 0 away from the bound
   /// reached (0 if the stop was not touched).
   double stop_impulse(int s) const;
+  /// +1 if stop s acted at its lower bound in the last step (pushing the coordinate up),
+  /// -1 at its upper bound, 0 if it was not in the problem.
+  double stop_direction(int s) const { return stop_sign_[s]; }
 
  private:
   void add_point_row(int row, int link, const Vector3& point, const Vector3& direction, double sign, const Data& data);
+  /// The chain failed on a problem with friction rows: the fixed point of Dantzig solves
+  /// with the friction boxes held at the last normal impulses (z holds the start).
+  ComplementarityResult solve_with_fixed_friction_bounds(const ComplementarityProblem& problem, VectorView z,
+                                                         const ComplementarityResult& chain);
   /// Calls visit(c) once for every column c of J that row `row` can have nonzero.
   template <typename Visit>
   void for_each_row_column(int row, Visit&& visit) const;
@@ -104,6 +110,7 @@ class ContactStepper {
   MatrixX minv_jacobian_t_;  ///< nv x rows: M^-1 J^T
   MatrixX delassus_;         ///< rows x rows: A
   VectorX offset_, impulses_, previous_impulses_, friction_coefficient_, lower_, upper_;
+  VectorX fixed_lower_, fixed_upper_, previous_normal_;  ///< solve_with_fixed_friction_bounds
   Eigen::VectorXi friction_normal_;
   ComplementarityWorkspace workspace_;
 };

@@ -4,6 +4,7 @@
 
 #include "kernel/parameter_error.hpp"
 
+#include "kernel/integrators/contact_stepping_integrator.hpp"
 #include "kernel/integrators/erk_integrator.hpp"
 #include "kernel/integrators/hht_integrator.hpp"
 #include "kernel/integrators/ida_integrator.hpp"
@@ -47,7 +48,8 @@ std::unique_ptr<Integrator> make_explicit(const IntegratorSettings& settings, Od
     case IntegrationMethod::verner6: return std::make_unique<ErkIntegrator>(system, settings, ARKODE_VERNER_8_5_6);
     case IntegrationMethod::fehlberg8: return std::make_unique<ErkIntegrator>(system, settings, ARKODE_FEHLBERG_13_7_8);
     case IntegrationMethod::ida:
-    case IntegrationMethod::hht: break;
+    case IntegrationMethod::hht:
+    case IntegrationMethod::contact: break;
   }
   throw std::logic_error("make_explicit: " + integration_method_name(settings.method) + " is not an explicit method");
 }
@@ -62,6 +64,7 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, 
     case IntegrationMethod::hht:
       return owning(std::make_unique<Index3Form>(system),
                     [&](Index3Form& form) { return std::make_unique<HhtIntegrator>(form, settings); });
+    case IntegrationMethod::contact: return std::make_unique<ContactSteppingIntegrator>(system, settings.step);
     default:
       return owning(std::make_unique<OdeForm>(system),
                     [&](OdeForm& form) { return make_explicit(settings, form); });
@@ -76,6 +79,8 @@ std::unique_ptr<Integrator> make_integrator(const IntegratorSettings& settings, 
     case IntegrationMethod::hht:
       throw ParameterError("integrator", "'hht' for a first-order system without a second-order form",
                            "rk4, dopri5, verner6, fehlberg8 or ida (HHT integrates mechanical systems only)");
+    case IntegrationMethod::contact:
+      throw ParameterError("integrator", "'contact' for a first-order system", "rk4, dopri5, verner6, fehlberg8 or ida");
     default:
       return make_explicit(settings, system);
   }
@@ -89,6 +94,7 @@ std::string integration_method_name(IntegrationMethod method) {
     case IntegrationMethod::fehlberg8: return "fehlberg8";
     case IntegrationMethod::ida: return "ida";
     case IntegrationMethod::hht: return "hht";
+    case IntegrationMethod::contact: return "contact";
   }
   return "?";
 }

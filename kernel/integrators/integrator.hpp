@@ -17,9 +17,14 @@ enum class IntegrationMethod {
   verner6,    // ARKODE ERK Verner 6(5), adaptive (tight-tolerance references)
   fehlberg8,  // ARKODE ERK Fehlberg 8(7), adaptive (very tight tolerances)
   ida,        // SUNDIALS IDA, variable-order BDF (stiff problems), dense direct solver
-  hht         // Hilber-Hughes-Taylor, index-3 augmented Lagrangian with projections, fixed step
+  hht,        // Hilber-Hughes-Taylor, index-3 augmented Lagrangian with projections, fixed step
+  contact     // velocity-level contact stepping (impulses; contacts, stops, constraints as one MLCP), fixed step
 };
 
+/// Whether the method steps with the fixed solver.step (rk4, hht, contact).
+inline bool is_fixed_step(IntegrationMethod method) {
+  return method == IntegrationMethod::rk4 || method == IntegrationMethod::hht || method == IntegrationMethod::contact;
+}
 /// Linear solver for IDA's Newton iterations.
 enum class LinearSolver {
   dense,  // SUNDIALS dense LU

@@ -8,6 +8,7 @@
 #include <Eigen/SVD>
 
 #include "kernel/algorithms/configuration.hpp"
+#include "kernel/parameter_error.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/inverse_dynamics.hpp"
@@ -44,6 +45,12 @@ void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
   applied_dependencies_.velocity |= d.velocity;
   applied_dependencies_.element_states |= d.element_states && element->state_size() > 0;
   elements_.push_back(std::move(element));
+}
+
+void MultibodySystem::set_contacts(std::unique_ptr<ContactForces> contacts) {
+  if (contacts_) throw ParameterError("contacts", "a second contact set", "one per system");
+  contacts_ = contacts.get();
+  add_force_element(std::move(contacts));
 }
 
 VectorX MultibodySystem::initial_state(const VectorX& q0, const VectorX& v0) const {

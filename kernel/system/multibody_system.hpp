@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "kernel/algorithms/constrained_dynamics.hpp"
+#include "kernel/contact/contact_forces.hpp"
 #include "kernel/elements/force_element.hpp"
 #include "kernel/math/numerical_error.hpp"
 #include "kernel/system/failure_diagnosis.hpp"
@@ -37,6 +38,11 @@ class MultibodySystem {
   MultibodySystem& operator=(const MultibodySystem&) = delete;
 
   void add_force_element(std::unique_ptr<ForceElement> element);
+  /// Adds the contacts (shapes, pairs, stops) as their force element, which the
+  /// contact-stepping integrator fills with each step's contact loads; one per system.
+  void set_contacts(std::unique_ptr<ContactForces> contacts);
+  /// The contacts' element, null if the system has none.
+  ContactForces* contacts() const { return contacts_; }
 
   /// Size of the state y = [q; v; z].
   int size() const { return size_; }
@@ -141,6 +147,7 @@ class MultibodySystem {
   ElementDependencies applied_dependencies_;
   int size_;
   int constraint_rank_ = -1;
+  ContactForces* contacts_ = nullptr;  // owned by elements_
   VectorX q_, v_, tau_total_, constraint_force_, kkt_mismatch_, dynamic_residual_;
 };
 

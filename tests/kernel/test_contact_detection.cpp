@@ -110,7 +110,7 @@ TEST(ContactDetection, SphereOnPlaneAndOnABoxEdge) {
   const Vector3 direction = Vector3(1, 0, 1).normalized();
   ball.X_link_shape = Transform::from_translation(Vector3(1, 0, 2) + (0.3 + 5e-4) * direction);
   edge.contacts.geometries.push_back(ball);
-  edge.contacts.pairs = {{2, 1, 0.0, 0.0}};
+  edge.contacts.pairs = {{"ball_on_box", 2, 1, 0.0, 0.0}};
   points = detect(edge, edge.q);
   ASSERT_EQ(points.size(), 1u);
   EXPECT_NEAR(points[0].gap, 5e-4, 1e-14);
@@ -133,7 +133,7 @@ TEST(ContactDetection, CylinderLyingAndStandingOnPlane) {
   pipe.shape.radius = 0.25;
   pipe.shape.half_length = 6.0;
   scene.contacts.geometries = {plane, pipe};
-  scene.contacts.pairs = {{1, 0, 0.3, 0.0}};
+  scene.contacts.pairs = {{"pipe_on_deck", 1, 0, 0.3, 0.0}};
   // Lying along x (its z axis turned onto x), axis 0.25 m up: two points, one per end.
   VectorX q = scene.model->neutral_configuration();
   const Eigen::Quaterniond lying(Eigen::AngleAxisd(M_PI / 2, Vector3::UnitY()));
@@ -176,7 +176,7 @@ TEST(ContactDetection, CheckNamesTheBadItem) {
   bad.geometries[1].shape.kind = ContactShapeKind::plane;
   expect_refused(bad, "pairs[0]", "plane with plane");
   bad = scene.contacts;
-  bad.joint_stops.push_back({1, 0.0, 1.0, 0.0});
+  bad.joint_stops.push_back({"float_stop", 1, 0.0, 1.0, 0.0});
   expect_refused(bad, "joint_stops[0].joint", "'ball_free' with 6 velocity coordinates");
   EXPECT_NO_THROW(check_contact_model(*scene.model, scene.contacts));
 }

@@ -33,20 +33,18 @@ struct SteppedScene {
   ContactStepper stepper;
   VectorX q, v, tau;
   double t = 0.0;
+  double h;
   SteppedScene(samples::ContactScene s, double h, int max_contacts, ContactStepOptions options = {})
       : scene(std::move(s)),
         data(*scene.model),
-        stepper(*scene.model, scene.contacts, max_contacts, with_step(options, h)),
+        stepper(*scene.model, scene.contacts, max_contacts, options),
         q(scene.q),
         v(scene.v),
-        tau(VectorX::Zero(scene.model->nv)) {}
-  static ContactStepOptions with_step(ContactStepOptions options, double h) {
-    options.time_step = h;
-    return options;
-  }
+        tau(VectorX::Zero(scene.model->nv)),
+        h(h) {}
   ContactStepReport step() {
-    const ContactStepReport report = stepper.step(data, t, q, v, tau);
-    if (report.ok()) t += stepper.options().time_step;
+    const ContactStepReport report = stepper.step(data, t, h, q, v, tau);
+    if (report.ok()) t += h;
     return report;
   }
 };
@@ -98,16 +96,15 @@ TEST(ContactStepper, StopOnASlideHoldsTheWeightAndBouncesWithRestitution) {
   builder.add_joint(samples::joint_definition("slide", JointKind::prismatic, "ground", "sled", Vector3::UnitZ()));
   const Model model = builder.build();
   ContactModel contacts;
-  contacts.joint_stops.push_back({1, 0.0, 1.0, 0.5});
+  contacts.joint_stops.push_back({"slide_ends", 1, 0.0, 1.0, 0.5});
   ContactStepOptions options;
-  options.time_step = 1e-3;
   ContactStepper stepper(model, contacts, 0, options);
   Data data(model);
   VectorX q = VectorX::Constant(1, 0.5), v = VectorX::Zero(1), tau = VectorX::Zero(1);
   bool bounced = false;
   for (int k = 0; k < 5000; ++k) {
     const double before = v[0];
-    ASSERT_TRUE(stepper.step(data, k * 1e-3, q, v, tau).ok());
+    ASSERT_TRUE(stepper.step(data, k * 1e-3, 1e-3, q, v, tau).ok());
     if (!bounced && before < -1.0 && v[0] > 0) {
       bounced = true;
       EXPECT_NEAR(v[0], -0.5 * before, 1e-9 * std::abs(before));

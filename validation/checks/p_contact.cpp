@@ -23,24 +23,21 @@ struct Stepped {
   samples::ContactScene scene;
   Data data;
   ContactStepper stepper;
+  double h;
   VectorX q, v, tau;
   Stepped(samples::ContactScene s, double h, int max_contacts)
       : scene(std::move(s)),
         data(*scene.model),
-        stepper(*scene.model, scene.contacts, max_contacts, options(h)),
+        stepper(*scene.model, scene.contacts, max_contacts),
+        h(h),
         q(scene.q),
         v(scene.v),
         tau(VectorX::Zero(scene.model->nv)) {}
-  static ContactStepOptions options(double h) {
-    ContactStepOptions o;
-    o.time_step = h;
-    return o;
-  }
   /// Steps for `seconds`; false (with `failure` set) if a step's solve failed.
   bool run(double seconds, std::string& failure, const std::function<void()>& after_step = {}) {
-    const int steps = static_cast<int>(std::lround(seconds / stepper.options().time_step));
+    const int steps = static_cast<int>(std::lround(seconds / h));
     for (int k = 0; k < steps; ++k) {
-      const ContactStepReport report = stepper.step(data, k * stepper.options().time_step, q, v, tau);
+      const ContactStepReport report = stepper.step(data, k * h, h, q, v, tau);
       if (!report.ok()) {
         failure = report.solve.message;
         return false;

@@ -1,0 +1,44 @@
+#pragma once
+// The `contacts` section of a case (docs/case-format.md, "contacts"): shapes on bodies,
+// the pairs checked for contact with their friction and restitution, and one-sided
+// stops on joints, by name. The scene resolves the names into the kernel's
+// ContactModel (kernel/contact/contact_model.hpp), whose check states the rules on the
+// values; run by `solver.integrator: contact` (docs/physics/contact.md).
+#include <string>
+#include <vector>
+
+#include "kernel/contact/contact_model.hpp"
+
+namespace heavesim {
+
+struct ContactGeometryDefinition {
+  std::string name;
+  std::string body;         ///< a body or "ground"
+  Transform X_body_shape;   ///< the shape frame in the body frame (`frame`)
+  ContactShape shape;
+};
+
+struct ContactPairDefinition {
+  std::string name;
+  std::string geometry_a, geometry_b;  ///< geometry names; a is pushed along the normal from b
+  double friction_coefficient = 0.0;
+  double restitution = 0.0;
+};
+
+struct JointStopDefinition {
+  std::string name;
+  std::string joint;
+  double lower = -std::numeric_limits<double>::infinity();  ///< m or rad
+  double upper = std::numeric_limits<double>::infinity();
+  double restitution = 0.0;
+};
+
+struct ContactDefinition {
+  std::vector<ContactGeometryDefinition> geometries;
+  std::vector<ContactPairDefinition> pairs;
+  std::vector<JointStopDefinition> joint_stops;
+  double margin = 1e-3;  ///< m
+  bool empty() const { return geometries.empty() && pairs.empty() && joint_stops.empty(); }
+};
+
+}  // namespace heavesim

@@ -1,0 +1,71 @@
+#include "kernel/contact/contact_forces.hpp"
+
+namespace heavesim {
+
+ContactForces::ContactForces(std::string name, const Model& model, ContactModel contacts)
+    : name_(std::move(name)),
+      contacts_(std::move(contacts)),
+      link_force_world_(model.num_links(), Force::Zero()),
+      joint_force_(VectorX::Zero(model.nv)) {
+  check_contact_model(model, contacts_);
+  for (const ContactPair& pair : contacts_.pairs) {
+    channels_.push_back({pair.name + "_normal_force", "N",
+                         "sum of the normal forces of pair '" + pair.name +
+                             "' on its first geometry, the last step's impulse / step (>= 0)"});
+    channels_.push_back({pair.name + "_friction_force", "N",
+                         "magnitude of the summed friction forces of pair '" + pair.name + "' (world)"});
+    channels_.push_back({pair.name + "_points", "1", "contact points of pair '" + pair.name + "' in the last step"});
+  }
+  for (const JointStop& stop : contacts_.joint_stops) {
+    const Joint& joint = model.joints[stop.joint];
+    stop_velocity_index_.push_back(joint.v_index);
+    channels_.push_back({stop.name + "_force", std::holds_alternative<RevoluteJoint>(joint.type) ? "N m" : "N",
+                         "generalized force of stop '" + stop.name + "' on joint '" + joint.name +
+                             "' (> 0 along the coordinate), the last step's impulse / step"});
+  }
+  channel_values_ = VectorX::Zero(channels_.size());
+  friction_sum_.assign(contacts_.pairs.size(), Vector3::Zero());
+}
+
+void ContactForces::apply(double, const Model&, const Data&, Eigen::Ref<const VectorX>, AppliedForces& forces) const {
+  for (std::size_t i = 1; i < link_force_world_.size(); ++i) forces.external_force_world[i] += link_force_world_[i];
+  forces.joint_force += joint_force_;
+}
+
+void ContactForces::outputs(double, const Model&, const Data&, Eigen::Ref<const VectorX>,
+                            std::span<double> values) const {
+  for (std::size_t c = 0; c < values.size(); ++c) values[c] = channel_values_[c];
+}
+
+void ContactForces::clear() {
+  for (Force& f : link_force_world_) f = Force::Zero();
+  joint_force_.setZero();
+  channel_values_.setZero();
+}
+
+void ContactForces::set_from(const ContactStepper& stepper, double h) {
+  clear();
+  for (Vector3& sum : friction_sum_) sum.setZero();
+  const auto points = stepper.contacts();
+  for (int k = 0; k < static_cast<int>(points.size()); ++k) {
+    const ContactPoint& c = points[k];
+    const Vector3 force = stepper.contact_impulse_world(k) / h;
+    const Force on_a = Force::at_point(c.point_world, force);
+    link_force_world_[c.link_a] += on_a;
+    link_force_world_[c.link_b] -= on_a;
+    const double normal = force.dot(c.normal_world);
+    channel_values_[3 * c.pair] += normal;
+    friction_sum_[c.pair] += force - normal * c.normal_world;
+    channel_values_[3 * c.pair + 2] += 1.0;
+  }
+  link_force_world_[0] = Force::Zero();  // the ground takes what it takes
+  for (std::size_t p = 0; p < friction_sum_.size(); ++p) channel_values_[3 * p + 1] = friction_sum_[p].norm();
+  const int first_stop = 3 * static_cast<int>(contacts_.pairs.size());
+  for (std::size_t s = 0; s < stop_velocity_index_.size(); ++s) {
+    const double force = stepper.stop_direction(static_cast<int>(s)) * stepper.stop_impulse(static_cast<int>(s)) / h;
+    joint_force_[stop_velocity_index_[s]] += force;
+    channel_values_[first_stop + s] = force;
+  }
+}
+
+}  // namespace heavesim

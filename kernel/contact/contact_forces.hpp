@@ -1,0 +1,43 @@
+#pragma once
+// The contact forces of the last contact step as a force element: what the recorder
+// writes (per pair its normal and friction force and point count, per stop its force)
+// and what an evaluation of the system at an output time applies, so that joint
+// accelerations and reactions there include the contact loads (the step's impulses
+// divided by its length: the mean force over the step). The contact-stepping integrator
+// clears them before it computes the applied forces of a step (the step's own impulses
+// replace them) and sets them after.
+#include "kernel/contact/contact_stepper.hpp"
+#include "kernel/elements/force_element.hpp"
+
+namespace heavesim {
+
+class ContactForces : public ForceElement {
+ public:
+  ContactForces(std::string name, const Model& model, ContactModel contacts);
+
+  const std::string& name() const override { return name_; }
+  const ContactModel& contact_model() const { return contacts_; }
+  void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
+             AppliedForces& forces) const override;
+  ElementDependencies dependencies() const override { return {false, false, false, false}; }
+  const std::vector<ElementChannel>& channels() const override { return channels_; }
+  void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
+               std::span<double> values) const override;
+
+  /// No contact loads (before a step computes its applied forces).
+  void clear();
+  /// The loads of the step of length h [s] that `stepper` has just taken.
+  void set_from(const ContactStepper& stepper, double h);
+
+ private:
+  std::string name_;
+  ContactModel contacts_;
+  std::vector<int> stop_velocity_index_;
+  std::vector<ElementChannel> channels_;
+  AlignedVector<Force> link_force_world_;  ///< per link, about the world origin [N, N m]
+  VectorX joint_force_;                     ///< nv: the stops' generalized forces [N or N m]
+  VectorX channel_values_;                  ///< per pair: normal [N], friction [N], points; per stop: force
+  std::vector<Vector3> friction_sum_;       ///< per pair, world [N]
+};
+
+}  // namespace heavesim

@@ -1,0 +1,70 @@
+// Runs of cases with `contacts` (solver.integrator: contact) through the command line:
+// the recorded contact forces against closed forms. A box on a deck driven in surge and
+// heave carries m (g + z_d'') on its face whether it sticks or slips (the deck's heave
+// acceleration is prescribed), its friction never exceeds mu times that, and it slips
+// for the share of the time the piecewise closed form gives (82.7 % over two periods:
+// the kernel test ContactStepper.BoxOnASurgingHeavingDeckSticksAndSlipsAsTheClosedForm
+// computes it). The demo case runs to the end; a driver that pushes a box into a fixed
+// ceiling ends the run with exit 3 naming the step and the contacts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "tests/app/h5_file.hpp"
+#include "tests/test_support.hpp"
+
+namespace heavesim {
+namespace {
+
+TEST(ContactRun, BoxOnADeckCarriesMassTimesGravityPlusHeaveAcceleration) {
+  const std::string output = temporary("contact_box_on_deck.h5");
+  const testing::CommandResult run = testing::run_case("tests/cases/contact_box_on_deck.yaml", output);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const H5File file(output);
+  const std::vector<double> time = file.read("/time");
+  const std::vector<double> normal = file.read("/forces/contacts/box_normal_force");
+  const std::vector<double> friction = file.read("/forces/contacts/box_friction_force");
+  ASSERT_EQ(normal.size(), time.size());
+  const double m = 200.0, g = 9.81, mu = 0.2;
+  int slipping = 0;
+  for (std::size_t k = 1; k < time.size(); ++k) {  // t = 0: the first step's loads, half the deck's acceleration
+    const double heave_acceleration = -2.0 * std::sin(time[k] + M_PI / 3);
+    // First order: over one 1 ms step the deck's acceleration moves by h B w^3 = 2e-3 m/s^2.
+    EXPECT_NEAR(normal[k], m * (g + heave_acceleration), 5e-4 * m * g) << "t = " << time[k];
+    EXPECT_LE(friction[k], mu * normal[k] * (1 + 1e-9)) << "t = " << time[k];
+    slipping += std::abs(friction[k] - mu * normal[k]) <= 1e-9 * normal[k];
+  }
+  EXPECT_NEAR(double(slipping) / (time.size() - 1), 0.827, 0.02);
+  EXPECT_EQ(file.long_attribute("/", "complete"), 1);
+}
+
+TEST(ContactRun, DeckCargoDemoRunsToTheEnd) {
+  const std::string output = temporary("deck_cargo.h5");
+  const testing::CommandResult run = testing::run_case("cases/contact/deck_cargo.yaml", output, "--set solver.t_end=12");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const H5File file(output);
+  EXPECT_EQ(file.long_attribute("/", "complete"), 1);
+  // The container rests on four corners and the pipes on two rim points each, always.
+  for (const double points : file.read("/forces/contacts/container_points")) EXPECT_EQ(points, 4.0);
+  for (const double points : file.read("/forces/contacts/pipe_2_points")) EXPECT_EQ(points, 2.0);
+}
+
+TEST(ContactRun, ADriverPushingABoxIntoTheCeilingStopsWithExit3NamingTheContacts) {
+  // The deck rises at 0.5 m/s under a box a fixed ceiling holds down: from t = 0.4 s the
+  // box touches both and no impulses can meet the driver (the problem has no solution).
+  const std::string output = temporary("fault_contact_ceiling.h5");
+  const testing::CommandResult run =
+      testing::run_case("tests/cases/fault_contact_driver_into_ceiling.yaml", output);
+  EXPECT_EQ(run.exit_code, 3) << run.output;
+  for (const char* part : {"at t = 0.4 s", "found no impulses", "'box_on_deck' gap", "'box_on_ceiling' gap",
+                           "1 constraint rows", "Dantzig: ", "residual", "a driver"})
+    EXPECT_NE(run.output.find(part), std::string::npos) << "'" << part << "' in: " << run.output;
+  const H5File file(output);
+  EXPECT_EQ(file.long_attribute("/", "complete"), 0);
+  const std::vector<double> time = file.read("/time");
+  ASSERT_FALSE(time.empty());
+  EXPECT_NEAR(time.back(), 0.4, 0.011);  // the last whole output before the failure
+}
+
+}  // namespace
+}  // namespace heavesim
