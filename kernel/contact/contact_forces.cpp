@@ -23,7 +23,22 @@ ContactForces::ContactForces(std::string name, const Model& model, ContactModel 
                          "generalized force of stop '" + stop.name + "' on joint '" + joint.name +
                              "' (> 0 along the coordinate), the last step's impulse / step"});
   }
+  // Running totals: an impact lasts one step, between two samples; the difference of
+  // two samples of a total is the impulse delivered between them, impacts included.
+  for (const ContactPair& pair : contacts_.pairs) {
+    impulse_channel_.push_back(static_cast<int>(channels_.size()));
+    channels_.push_back({pair.name + "_normal_impulse", "N s",
+                         "normal impulse of pair '" + pair.name + "' since the start (running total)"});
+  }
+  for (const JointStop& stop : contacts_.joint_stops) {
+    impulse_channel_.push_back(static_cast<int>(channels_.size()));
+    channels_.push_back({stop.name + "_impulse",
+                         std::holds_alternative<RevoluteJoint>(model.joints[stop.joint].type) ? "N m s" : "N s",
+                         "generalized impulse of stop '" + stop.name + "' since the start (running total, > 0 along "
+                         "the coordinate)"});
+  }
   channel_values_ = VectorX::Zero(channels_.size());
+  impulse_totals_ = VectorX::Zero(impulse_channel_.size());
   friction_sum_.assign(contacts_.pairs.size(), Vector3::Zero());
 }
 
@@ -41,6 +56,7 @@ void ContactForces::clear() {
   for (Force& f : link_force_world_) f = Force::Zero();
   joint_force_.setZero();
   channel_values_.setZero();
+  for (std::size_t k = 0; k < impulse_channel_.size(); ++k) channel_values_[impulse_channel_[k]] = impulse_totals_[k];
 }
 
 void ContactForces::set_from(const ContactStepper& stepper, double h) {
@@ -65,7 +81,10 @@ void ContactForces::set_from(const ContactStepper& stepper, double h) {
     const double force = stepper.stop_direction(static_cast<int>(s)) * stepper.stop_impulse(static_cast<int>(s)) / h;
     joint_force_[stop_velocity_index_[s]] += force;
     channel_values_[first_stop + s] = force;
+    impulse_totals_[contacts_.pairs.size() + s] += force * h;
   }
+  for (std::size_t p = 0; p < contacts_.pairs.size(); ++p) impulse_totals_[p] += channel_values_[3 * p] * h;
+  for (std::size_t k = 0; k < impulse_channel_.size(); ++k) channel_values_[impulse_channel_[k]] = impulse_totals_[k];
 }
 
 }  // namespace heavesim

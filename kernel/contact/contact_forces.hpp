@@ -26,8 +26,11 @@ class ContactForces : public ForceElement {
 
   /// No contact loads (before a step computes its applied forces).
   void clear();
-  /// The loads of the step of length h [s] that `stepper` has just taken.
+  /// The loads of the step of length h [s] that `stepper` has just taken; adds its
+  /// impulses to the running totals.
   void set_from(const ContactStepper& stepper, double h);
+  /// Running totals of the impulses back to zero (the start of a run).
+  void reset_impulses() { impulse_totals_.setZero(); }
 
  private:
   std::string name_;
@@ -38,6 +41,8 @@ class ContactForces : public ForceElement {
   VectorX joint_force_;                     ///< nv: the stops' generalized forces [N or N m]
   VectorX channel_values_;                  ///< per pair: normal [N], friction [N], points; per stop: force
   std::vector<Vector3> friction_sum_;       ///< per pair, world [N]
+  VectorX impulse_totals_;                  ///< per pair its normal impulse, per stop its impulse, since the start [N s]
+  std::vector<int> impulse_channel_;        ///< the channel of each running total
 };
 
 }  // namespace heavesim

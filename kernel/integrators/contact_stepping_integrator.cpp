@@ -38,6 +38,7 @@ void ContactSteppingIntegrator::initialize(double t0, const VectorX& y0) {
     t_ = t0;
     y_ = y0;
     statistics_ = {};
+    system_.contacts()->reset_impulses();
   }
 }
 

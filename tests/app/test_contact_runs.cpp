@@ -66,5 +66,41 @@ TEST(ContactRun, ADriverPushingABoxIntoTheCeilingStopsWithExit3NamingTheContacts
   EXPECT_NEAR(time.back(), 0.4, 0.011);  // the last whole output before the failure
 }
 
+TEST(ContactRun, PenaltyEndStopsConvergeToTheUnilateralStopOfTheRig) {
+  // The H0 rig's passive compensator with stops at +-0.5 m in the default wave: the crown
+  // block strikes them. The joint stop (velocity-level contact, restitution exp(-2), what
+  // a critically damped penalty stop restitutes in its rigid limit; the case file derives
+  // it) against the compensator's own penalty stops, critically damped, under IDA, at
+  // 1e8, 1e9 and 1e10 N/m: the stroke histories meet as the penetration, of order
+  // v sqrt(M_eff / k), shrinks -- by sqrt(10) per decade of stiffness.
+  const std::string extra = " --set solver.t_end=40 --set output.evaluate_after=20 --set output.interval=0.01";
+  const std::string unilateral_file = temporary("end_stops_unilateral.h5");
+  const testing::CommandResult unilateral =
+      testing::run_case("cases/contact/drilling_end_stops.yaml", unilateral_file, extra);
+  ASSERT_EQ(unilateral.exit_code, 0) << unilateral.output;
+  const std::vector<double> stroke = H5File(unilateral_file).read("/joints/compensator/q");
+  for (const double s : stroke) EXPECT_LE(std::abs(s), 0.5 + 1e-6);
+  const std::vector<double> impulse = H5File(unilateral_file).read("/forces/contacts/stroke_ends_impulse");
+  EXPECT_GT(std::abs(impulse.back()), 1e4);  // N s: the stops did work
+  std::vector<double> difference;
+  for (const char* stiffness : {"1e8", "1e9", "1e10"}) {
+    const std::string file = temporary(std::string("end_stops_penalty_") + stiffness + ".h5");
+    const testing::CommandResult penalty = testing::run_case(
+        "cases/c3_regular_waves/h0_passive.yaml", file,
+        extra + " --set parameters.stroke_half=0.5 --set forces[6].end_stops.stiffness=" + stiffness +
+            " --set 'forces[6].end_stops.damping=2*sqrt(" + stiffness + "*M_eff)'");
+    ASSERT_EQ(penalty.exit_code, 0) << penalty.output;
+    const std::vector<double> penalty_stroke = H5File(file).read("/joints/compensator/q");
+    ASSERT_EQ(penalty_stroke.size(), stroke.size());
+    double largest = 0.0;
+    for (std::size_t k = 0; k < stroke.size(); ++k) largest = std::max(largest, std::abs(penalty_stroke[k] - stroke[k]));
+    difference.push_back(largest);
+  }
+  // Measured: 0.072, 0.024, 0.0076 m; sqrt(10) = 3.16 per decade.
+  EXPECT_GT(difference[0] / difference[1], 2.5) << difference[0] << " " << difference[1];
+  EXPECT_GT(difference[1] / difference[2], 2.5) << difference[1] << " " << difference[2];
+  EXPECT_LT(difference[2], 0.01);
+}
+
 }  // namespace
 }  // namespace heavesim
