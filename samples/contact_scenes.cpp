@@ -157,4 +157,45 @@ ContactScene box_on_moving_deck(const MovingDeck& deck, double mu, const Vector3
   return scene;
 }
 
+ContactScene standing_cylinder_on_plane(double radius, double half_length, double mass, double mu, double spin) {
+  ContactShape cylinder;
+  cylinder.kind = ContactShapeKind::cylinder;
+  cylinder.radius = radius;
+  cylinder.half_length = half_length;
+  const double axial = 0.5 * mass * radius * radius;
+  const double transverse = mass * (3.0 * radius * radius + 4.0 * half_length * half_length) / 12.0;
+  ContactScene scene = one_body_on_plane("bit", Inertia(mass, Vector3::Zero(), Vector3(transverse, transverse, axial).asDiagonal()),
+                                         cylinder, Eigen::Quaterniond::Identity(), Vector3(0, 0, half_length), mu, 0.0);
+  scene.v[2] = spin;
+  return scene;
+}
+
+ContactScene load_on_heaving_line(const HeavingTip& tip, double length, double mass, double restitution) {
+  ModelBuilder builder;
+  builder.add_body({"tip", solid_box(1e3, Vector3(0.5, 0.5, 0.5)), std::nullopt});
+  builder.add_body({"load", solid_box(mass, Vector3(0.5, 0.5, 0.5)), std::nullopt});
+  builder.add_joint(joint_definition("tip_heave", JointKind::prismatic, "ground", "tip", Vector3::UnitZ()));
+  builder.add_joint(joint_definition("load_heave", JointKind::prismatic, "ground", "load", Vector3::UnitZ()));
+  DriverDefinition motion;
+  motion.name = "tip_motion";
+  motion.joint = "tip_heave";
+  motion.motion = [a = tip.amplitude, w = tip.omega](double t) {
+    return DriverMotion{a * std::sin(w * t), a * w * std::cos(w * t), -a * w * w * std::sin(w * t)};
+  };
+  builder.add_driver(motion);
+  ContactScene scene;
+  scene.model = std::make_shared<const Model>(builder.build());
+  scene.masses = {1e3, mass};
+  const Model& model = *scene.model;
+  scene.contacts.lines.push_back({"hoist_line", model.link_index("tip"), Vector3::Zero(), model.link_index("load"),
+                                  Vector3::Zero(), length, restitution});
+  scene.q = model.neutral_configuration();
+  scene.v = VectorX::Zero(model.nv);
+  const int tip_joint = model.joint_index("tip_heave"), load_joint = model.joint_index("load_heave");
+  scene.v[model.joints[tip_joint].v_index] = tip.amplitude * tip.omega;
+  scene.q[model.joints[load_joint].q_index] = -length;
+  scene.v[model.joints[load_joint].v_index] = tip.amplitude * tip.omega;
+  return scene;
+}
+
 }  // namespace heavesim::samples

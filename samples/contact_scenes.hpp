@@ -45,4 +45,19 @@ struct MovingDeck {
 };
 ContactScene box_on_moving_deck(const MovingDeck& deck, double mu, const Vector3& half_extents, double mass);
 
+/// A solid cylinder (radius, half_length [m], mass [kg]) standing on its end on the
+/// ground plane z = 0, its axis along z and its centre at z = half_length: a drill bit
+/// on the formation, touching at four rim points. Spun at `spin` [rad/s] about z.
+ContactScene standing_cylinder_on_plane(double radius, double half_length, double mass, double mu, double spin);
+
+/// A load hanging on a tension line from a tip that heaves: the tip (body "tip") on a
+/// prismatic z joint driven by z_tip(t) = amplitude sin(omega t) [m, rad/s] (driver
+/// "tip_motion"), the load (body "load", `mass` [kg]) on its own prismatic z joint from
+/// the ground, the line (`length` [m]) from the tip's origin to the load's. At t = 0 the
+/// line is taut and the load moves with the tip.
+struct HeavingTip {
+  double amplitude = 1.0, omega = 4.0;
+};
+ContactScene load_on_heaving_line(const HeavingTip& tip, double length, double mass, double restitution);
+
 }  // namespace heavesim::samples

@@ -155,6 +155,7 @@ constexpr KeySpec contacts_keys[] = {
     {"geometries", "list", "–", "none", "shapes on bodies"},
     {"pairs", "list", "–", "none", "geometry pairs checked for contact"},
     {"joint_stops", "list", "–", "none", "one-sided stops on 1-DoF joints"},
+    {"lines", "list", "–", "none", "lines that carry tension only (hoist lines, ropes)"},
 };
 
 constexpr KeySpec contact_geometry_keys[] = {
@@ -173,6 +174,7 @@ constexpr KeySpec contact_pair_keys[] = {
     {"b", "text", "–", "required", "the other geometry"},
     {"friction_coefficient", "number", "–", "0", "Coulomb mu (≥ 0)"},
     {"restitution", "number", "–", "0", "Newton's e in [0, 1]"},
+    {"friction_directions", "number", "–", "2", "tangents per point, 2..16: a friction polygon of 2k faces"},
 };
 
 constexpr KeySpec joint_stop_keys[] = {
@@ -181,6 +183,16 @@ constexpr KeySpec joint_stop_keys[] = {
     {"lower", "number", "m or rad", "none (one bound required)", "lower bound"},
     {"upper", "number", "m or rad", "none", "upper bound (> lower)"},
     {"restitution", "number", "–", "0", "Newton's e in [0, 1]"},
+};
+
+constexpr KeySpec tension_line_keys[] = {
+    {"name", "text", "–", "`<body_a>_to_<body_b>`", "names the output channels"},
+    {"body_a", "text", "–", "required", "body at one end (`ground` allowed)"},
+    {"point_a", "vector", "m", "`[0, 0, 0]`", "the end on body a, its frame"},
+    {"body_b", "text", "–", "required", "body at the other end"},
+    {"point_b", "vector", "m", "`[0, 0, 0]`", "the end on body b, its frame"},
+    {"length", "number", "m", "required", "> 0: the ends stay at most this far apart"},
+    {"restitution", "number", "–", "0", "Newton's e in [0, 1] when the line snaps taut"},
 };
 
 constexpr KeySpec output_keys[] = {
@@ -307,6 +319,7 @@ constexpr SchemaSection fixed_sections[] = {
     {"contact_geometry", contact_geometry_keys},
     {"contact_pair", contact_pair_keys},
     {"joint_stop", joint_stop_keys},
+    {"tension_line", tension_line_keys},
     {"solver", solver_keys},
     {"output", output_keys},
     {"kinematics", kinematics_keys},

@@ -1,5 +1,6 @@
 #include "app/case/contact_reader.hpp"
 
+#include <algorithm>
 #include <set>
 
 #include "app/case/frame_reader.hpp"
@@ -35,7 +36,7 @@ void read_contacts(const NodeReader& section, CaseDefinition& definition) {
   std::vector<std::string> bodies = {ModelBuilder::ground_name}, joints, geometry_names;
   for (const BodyDefinition& body : definition.bodies) bodies.push_back(body.name);
   for (const JointDefinition& joint : definition.joints) joints.push_back(joint.name);
-  std::set<std::string> geometry_set, pair_set, stop_set;  // names unique within each list
+  std::set<std::string> geometry_set, pair_set, stop_set, line_set;  // names unique within each list
   if (auto geometries = section.optional("geometries"))
     for (const NodeReader& item : geometries->items()) {
       item.expect_section("contact_geometry");
@@ -69,6 +70,8 @@ void read_contacts(const NodeReader& section, CaseDefinition& definition) {
       pair.name = unique_name(item, pair_set, pair.geometry_a + "_on_" + pair.geometry_b);
       pair.friction_coefficient = item.number_or("friction_coefficient", 0.0);
       pair.restitution = item.number_or("restitution", 0.0);
+      if (auto directions = item.optional("friction_directions"))
+        pair.friction_directions = static_cast<int>(std::clamp(directions->integer(), -1L, 1000L));  // the kernel checks 2..16
       contacts.pairs.push_back(pair);
     }
   if (auto stops = section.optional("joint_stops"))
@@ -82,6 +85,19 @@ void read_contacts(const NodeReader& section, CaseDefinition& definition) {
       if (!item.has("lower") && !item.has("upper")) item["lower"];  // at least one bound
       stop.restitution = item.number_or("restitution", 0.0);
       contacts.joint_stops.push_back(stop);
+    }
+  if (auto lines = section.optional("lines"))
+    for (const NodeReader& item : lines->items()) {
+      item.expect_section("tension_line");
+      TensionLineDefinition line;
+      line.body_a = one_of(item, "body_a", bodies, "a body or 'ground'");
+      line.body_b = one_of(item, "body_b", bodies, "a body or 'ground'");
+      line.name = unique_name(item, line_set, line.body_a + "_to_" + line.body_b);
+      if (auto point = item.optional("point_a")) line.point_a = point->vector3_in(length_range);
+      if (auto point = item.optional("point_b")) line.point_b = point->vector3_in(length_range);
+      line.length = item["length"].number_in(length_range);  // > 0: the kernel's check, at this key
+      line.restitution = item.number_or("restitution", 0.0);
+      contacts.lines.push_back(line);
     }
 }
 

@@ -28,9 +28,16 @@ void build_contacts(const CaseDefinition& definition, MultibodySystem& system) {
   }
   for (const ContactPairDefinition& pair : contacts.pairs)
     resolved.pairs.push_back({pair.name, geometry_index(pair.geometry_a), geometry_index(pair.geometry_b),
-                              pair.friction_coefficient, pair.restitution});
+                              pair.friction_coefficient, pair.restitution, pair.friction_directions});
   for (const JointStopDefinition& stop : contacts.joint_stops)
     resolved.joint_stops.push_back({stop.name, model.joint_index(stop.joint), stop.lower, stop.upper, stop.restitution});
+  for (const TensionLineDefinition& line : contacts.lines) {
+    // Each end given in its body frame; the kernel takes it in the link frame.
+    const int link_a = model.link_index(line.body_a), link_b = model.link_index(line.body_b);
+    resolved.lines.push_back({line.name, link_a, model.links[link_a].X_link_body.act_point(line.point_a), link_b,
+                              model.links[link_b].X_link_body.act_point(line.point_b), line.length,
+                              line.restitution});
+  }
   try {
     system.set_contacts(std::make_unique<ContactForces>("contacts", model, resolved));
   } catch (const ParameterError& error) {

@@ -23,6 +23,9 @@ ContactForces::ContactForces(std::string name, const Model& model, ContactModel 
                          "generalized force of stop '" + stop.name + "' on joint '" + joint.name +
                              "' (> 0 along the coordinate), the last step's impulse / step"});
   }
+  for (const TensionLine& line : contacts_.lines)
+    channels_.push_back({line.name + "_tension", "N",
+                         "tension of line '" + line.name + "' (>= 0; 0 while slack), the last step's impulse / step"});
   // Running totals: an impact lasts one step, between two samples; the difference of
   // two samples of a total is the impulse delivered between them, impacts included.
   for (const ContactPair& pair : contacts_.pairs) {
@@ -36,6 +39,12 @@ ContactForces::ContactForces(std::string name, const Model& model, ContactModel 
                          std::holds_alternative<RevoluteJoint>(model.joints[stop.joint].type) ? "N m s" : "N s",
                          "generalized impulse of stop '" + stop.name + "' since the start (running total, > 0 along "
                          "the coordinate)"});
+  }
+  for (const TensionLine& line : contacts_.lines) {
+    impulse_channel_.push_back(static_cast<int>(channels_.size()));
+    channels_.push_back({line.name + "_impulse", "N s",
+                         "impulse of line '" + line.name + "' since the start (running total; a snap load is the "
+                         "difference of two samples)"});
   }
   channel_values_ = VectorX::Zero(channels_.size());
   impulse_totals_ = VectorX::Zero(impulse_channel_.size());
@@ -83,6 +92,19 @@ void ContactForces::set_from(const ContactStepper& stepper, double h) {
     channel_values_[first_stop + s] = force;
     impulse_totals_[contacts_.pairs.size() + s] += force * h;
   }
+  const std::size_t stops = stop_velocity_index_.size();
+  for (std::size_t l = 0; l < contacts_.lines.size(); ++l) {
+    const int line = static_cast<int>(l);
+    const double tension = stepper.line_impulse(line) / h;
+    if (tension != 0.0) {
+      const Vector3 pull_on_a = tension * stepper.line_direction_world(line);
+      link_force_world_[contacts_.lines[l].link_a] += Force::at_point(stepper.line_point_a_world(line), pull_on_a);
+      link_force_world_[contacts_.lines[l].link_b] -= Force::at_point(stepper.line_point_b_world(line), pull_on_a);
+    }
+    channel_values_[first_stop + stops + l] = tension;
+    impulse_totals_[contacts_.pairs.size() + stops + l] += tension * h;
+  }
+  link_force_world_[0] = Force::Zero();
   for (std::size_t p = 0; p < contacts_.pairs.size(); ++p) impulse_totals_[p] += channel_values_[3 * p] * h;
   for (std::size_t k = 0; k < impulse_channel_.size(); ++k) channel_values_[impulse_channel_[k]] = impulse_totals_[k];
 }

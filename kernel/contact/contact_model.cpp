@@ -90,6 +90,10 @@ void check_contact_model(const Model& model, const ContactModel& contacts) {
                            "a finite number >= 0");
     if (!(pair.restitution >= 0.0 && pair.restitution <= 1.0))
       throw ParameterError(field + ".restitution", number(pair.restitution) + named, "0 <= e <= 1");
+    if (pair.friction_directions < 2 || pair.friction_directions > ContactPair::max_friction_directions)
+      throw ParameterError(field + ".friction_directions", std::to_string(pair.friction_directions) + named,
+                           "2.." + std::to_string(ContactPair::max_friction_directions) +
+                               " tangent directions (a friction polygon of 4..32 faces)");
   }
   for (int s = 0; s < static_cast<int>(contacts.joint_stops.size()); ++s) {
     const JointStop& stop = contacts.joint_stops[s];
@@ -108,6 +112,22 @@ void check_contact_model(const Model& model, const ContactModel& contacts) {
                            "lower < upper");
     if (!(stop.restitution >= 0.0 && stop.restitution <= 1.0))
       throw ParameterError(field + ".restitution", number(stop.restitution), "0 <= e <= 1");
+  }
+  for (int l = 0; l < static_cast<int>(contacts.lines.size()); ++l) {
+    const TensionLine& line = contacts.lines[l];
+    const std::string field = "lines[" + std::to_string(l) + "]";
+    for (const int link : {line.link_a, line.link_b})
+      if (link < 0 || link >= model.num_links())
+        throw ParameterError(field + ".link", std::to_string(link) + " (line '" + line.name + "')",
+                             "a link index 0.." + std::to_string(model.num_links() - 1));
+    if (line.link_a == line.link_b)
+      throw ParameterError(field, "both ends of line '" + line.name + "' on one link", "ends on two different links");
+    if (!line.point_a.allFinite() || !line.point_b.allFinite())
+      throw ParameterError(field + (line.point_a.allFinite() ? ".point_b" : ".point_a"), "a point that is not finite",
+                           "finite coordinates in m");
+    if (!positive(line.length)) throw ParameterError(field + ".length", number(line.length), "a length > 0 m");
+    if (!(line.restitution >= 0.0 && line.restitution <= 1.0))
+      throw ParameterError(field + ".restitution", number(line.restitution), "0 <= e <= 1");
   }
   if (!(std::isfinite(contacts.margin) && contacts.margin >= 0.0))
     throw ParameterError("margin", number(contacts.margin), "a finite length >= 0 m");

@@ -31,14 +31,23 @@ ContactStepper::ContactStepper(const Model& model, ContactModel contacts, int ma
     throw ParameterError("regularization", std::to_string(options_.regularization), "a finite number >= 0");
   if (max_contacts < 0) throw ParameterError("max_contacts", std::to_string(max_contacts), "a count >= 0");
   const int stops = static_cast<int>(contacts_.joint_stops.size());
-  capacity_rows_ = model.num_constraint_rows + 3 * max_contacts + stops;
+  const int lines = static_cast<int>(contacts_.lines.size());
+  int rows_per_point = 1;
+  for (const ContactPair& pair : contacts_.pairs)
+    if (pair.friction_coefficient > 0.0) rows_per_point = std::max(rows_per_point, 1 + pair.friction_directions);
+  capacity_rows_ = model.num_constraint_rows + rows_per_point * max_contacts + stops + lines;
   const int nv = model.nv;
   points_.resize(max_contacts);
   for (int j = 1; j < static_cast<int>(model.joints.size()); ++j)
     if (std::holds_alternative<FreeJoint>(model.joints[j].type)) free_joints_.push_back(j);
   contact_first_row_.resize(max_contacts);
+  friction_rows_.resize(max_contacts);
   stop_row_.assign(stops, -1);
   stop_sign_.assign(stops, 0.0);
+  line_row_.assign(lines, -1);
+  line_point_a_.assign(lines, Vector3::Zero());
+  line_point_b_.assign(lines, Vector3::Zero());
+  line_direction_.assign(lines, Vector3::UnitZ());
   zero_acceleration_ = VectorX::Zero(nv);
   free_velocity_.resize(nv);
   velocity_next_.resize(nv);
@@ -75,6 +84,50 @@ void ContactStepper::add_point_row(int row, int link, const Vector3& point, cons
       const auto s = data.motion_subspace_world.col(c);
       jacobian_(row, c) += sign * (direction.dot(s.tail<3>()) + moment_arm.dot(s.head<3>()));
     }
+  }
+}
+
+Vector3 ContactStepper::friction_direction(const ContactPoint& point, int d, int k) {
+  if (k <= 2) return d == 0 ? point.tangent1_world : point.tangent2_world;
+  // The k boxes add up to a 2k-gon whose face normals are perpendicular to the
+  // directions: with one direction along tangent2 (odd k), tangent1 is a face normal.
+  const double angle = M_PI * d / k + (k % 2 == 1 ? M_PI / 2 : 0.0);
+  return std::cos(angle) * point.tangent1_world + std::sin(angle) * point.tangent2_world;
+}
+
+double ContactStepper::friction_box_scale(int k) {
+  if (k == 1) return 1.0;  // a sliding point's one row: mu z_n against the slip
+  // The support of the sum of k boxes |z_d| <= c along directions pi/k apart is
+  // c sum_d |cos(phi - theta_d)|, between cot(pi/2k) at a face normal and
+  // csc(pi/2k) at a corner: c = tan(pi/2k) puts the faces on the circle of radius 1.
+  return k == 2 ? 1.0 : std::tan(M_PI / (2.0 * k));
+}
+
+// A point that slips at the step's start has one friction row, along its slip
+// direction, boxed by mu z_n: Coulomb's law for sliding, mu z_n against the slip whatever
+// its direction (the four-facet pyramid gives up to sqrt(2) mu z_n on a diagonal, and a
+// spinning bit's torque would ripple with its angle), and no grip across the slip, so
+// that a force across a sliding body turns its path. The direction is the start's
+// (explicit; first order where the path curves); the magnitude is implicit, so a slip
+// that stops within the step sticks. Points that stick (slip below the threshold) keep
+// the supporting shape's axes and the whole polygon of the pair's directions.
+void ContactStepper::classify_friction(const Data& data) {
+  const auto point_velocity = [&](int link, const Vector3& p) {
+    const Motion& v = data.velocity_world[link];
+    return Vector3(v.linear() + v.angular().cross(p));
+  };
+  for (int k = 0; k < contact_count_; ++k) {
+    ContactPoint& c = points_[k];
+    const ContactPair& pair = contacts_.pairs[c.pair];
+    friction_rows_[k] = pair.friction_coefficient > 0.0 ? pair.friction_directions : 0;
+    if (friction_rows_[k] == 0) continue;
+    const Vector3 relative = point_velocity(c.link_a, c.point_world) - point_velocity(c.link_b, c.point_world);
+    const Vector3 slip = relative - relative.dot(c.normal_world) * c.normal_world;
+    const double speed = slip.norm();
+    if (!(speed > options_.sliding_speed_threshold)) continue;
+    c.tangent1_world = slip / speed;
+    c.tangent2_world = c.normal_world.cross(c.tangent1_world);
+    friction_rows_[k] = 1;
   }
 }
 
@@ -138,9 +191,10 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
     return report;
   }
   contact_count_ = found;
+  classify_friction(data);
   const int bilateral = model_.num_constraint_rows;
   int rows = bilateral;
-  for (int k = 0; k < found; ++k) rows += contacts_.pairs[points_[k].pair].friction_coefficient > 0.0 ? 3 : 1;
+  for (int k = 0; k < found; ++k) rows += 1 + friction_rows_[k];
   int stop_rows = 0;
   for (size_t s = 0; s < contacts_.joint_stops.size(); ++s) {
     const JointStop& stop = contacts_.joint_stops[s];
@@ -157,18 +211,22 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
     if (stop_sign_[s] != 0.0) stop_row_[s] = rows + stop_rows++;
   }
   rows += stop_rows;
+  // Tension lines: rows are decided below, once their Jacobian rows are known (up to one each).
+  const int rows_before_lines = rows;
+  rows += static_cast<int>(contacts_.lines.size());
   report.constraint_rows = bilateral;
   report.contacts = found;
   report.active_stops = stop_rows;
-  report.rows = rows;
 
-  auto J = jacobian_.topRows(rows);
-  J.setZero();
+  // Sized for every line; the rows of lines that are slack are dropped below.
+  auto J_all = jacobian_.topRows(rows);
+  J_all.setZero();
+  friction_coefficient_.head(rows).setZero();
+  friction_normal_.head(rows).setConstant(-1);
+  lower_.head(rows).setZero();
+  auto& J = J_all;
   auto mu = friction_coefficient_.head(rows);
   auto normal_of = friction_normal_.head(rows);
-  mu.setZero();
-  normal_of.setConstant(-1);
-  lower_.head(rows).setZero();
   if (bilateral > 0) {
     // The model's constraints (loop joints, couplers, drivers) as free rows: J v+ makes
     // Phi(q_{k+1}, t_{k+1}) = Phi(q_k, t_{k+1}) + h J v+ = 0 to first order, so a joint
@@ -194,18 +252,19 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
     const ContactPoint& c = points_[k];
     const ContactPair& pair = contacts_.pairs[c.pair];
     contact_first_row_[k] = row;
-    const int directions = pair.friction_coefficient > 0.0 ? 3 : 1;
-    const Vector3* axes[3] = {&c.normal_world, &c.tangent1_world, &c.tangent2_world};
+    const int directions = 1 + friction_rows_[k];
     for (int d = 0; d < directions; ++d) {
-      add_point_row(row + d, c.link_a, c.point_world, *axes[d], 1.0, data);
-      add_point_row(row + d, c.link_b, c.point_world, *axes[d], -1.0, data);
+      const Vector3 axis = d == 0 ? c.normal_world : friction_direction(c, d - 1, friction_rows_[k]);
+      add_point_row(row + d, c.link_a, c.point_world, axis, 1.0, data);
+      add_point_row(row + d, c.link_b, c.point_world, axis, -1.0, data);
       row_links_[row + d] = {c.link_a, c.link_b};
     }
     offset_[row] = gap_velocity(c.gap, J.row(row).dot(v), pair.restitution);
+    const double box = pair.friction_coefficient * friction_box_scale(friction_rows_[k]);
     for (int d = 1; d < directions; ++d) {
       offset_[row + d] = 0.0;
       normal_of[row + d] = row;
-      mu[row + d] = pair.friction_coefficient;
+      mu[row + d] = box;
     }
     row += directions;
   }
@@ -219,6 +278,41 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
     const double gap = stop_sign_[s] > 0.0 ? coordinate - stop.lower : stop.upper - coordinate;
     offset_[stop_row_[s]] = gap_velocity(gap, stop_sign_[s] * v[joint.v_index], stop.restitution);
   }
+  // A line's row measures the rate of its slack, length - |p_b - p_a|: with u the unit
+  // vector from p_a to p_b, d(slack)/dt = u . v_a(p_a) - u . v_b(p_b). Its impulse z >= 0
+  // pulls a towards b and b towards a (tension), and it enters, like a stop, when it is
+  // taut within the margin or would be at the step's unconstrained velocity.
+  row = rows_before_lines;
+  for (size_t l = 0; l < contacts_.lines.size(); ++l) {
+    const TensionLine& line = contacts_.lines[l];
+    line_row_[l] = -1;
+    line_point_a_[l] = data.X_world_link[line.link_a].act_point(line.point_a);
+    line_point_b_[l] = data.X_world_link[line.link_b].act_point(line.point_b);
+    const Vector3 span = line_point_b_[l] - line_point_a_[l];
+    const double distance = span.norm();
+    const double slack = line.length - distance;
+    if (!(slack < line.length)) continue;  // both ends at one point: no direction, and far from taut
+    line_direction_[l] = span / distance;
+    J.row(row).setZero();
+    add_point_row(row, line.link_a, line_point_a_[l], line_direction_[l], 1.0, data);
+    add_point_row(row, line.link_b, line_point_b_[l], line_direction_[l], -1.0, data);
+    const double free_rate = J.row(row).dot(free_velocity_);
+    if (std::min(slack, slack + h * free_rate) >= contacts_.margin) continue;
+    row_links_[row] = {line.link_a, line.link_b};
+    offset_[row] = gap_velocity(slack, J.row(row).dot(v), line.restitution);
+    line_row_[l] = row++;
+  }
+  rows = row;
+  report.taut_lines = rows - rows_before_lines;
+  report.rows = rows;
+  return solve_and_advance(report, h, q, v);
+}
+
+ContactStepReport ContactStepper::solve_and_advance(ContactStepReport report, double h, VectorX& q, VectorX& v) {
+  const int rows = report.rows, bilateral = report.constraint_rows;
+  const auto J = jacobian_.topRows(rows);
+  const auto mu = friction_coefficient_.head(rows);
+  const auto normal_of = friction_normal_.head(rows);
 
   if (rows > 0) {
     // A = J M^-1 J^T, q_lcp = J v* + b.
@@ -348,8 +442,7 @@ Vector3 ContactStepper::contact_impulse_world(int k) const {
   const ContactPoint& c = points_[k];
   const int row = contact_first_row_[k];
   Vector3 impulse = impulses_[row] * c.normal_world;
-  if (contacts_.pairs[c.pair].friction_coefficient > 0.0)
-    impulse += impulses_[row + 1] * c.tangent1_world + impulses_[row + 2] * c.tangent2_world;
+  for (int d = 0; d < friction_rows_[k]; ++d) impulse += impulses_[row + 1 + d] * friction_direction(c, d, friction_rows_[k]);
   return impulse;
 }
 

@@ -14,10 +14,14 @@
 // b holds the gap: b = gap / h lets a gap close exactly within the step but never pulls;
 // an overlap is removed by the fraction `stabilization` per step; an impact faster than
 // `restitution_threshold` leaves with e times its approach speed (Newton's law at the
-// velocity level). The friction box [-mu z_n, mu z_n] on two tangents is the
-// four-facet friction pyramid (ODE's dContactApprox1, Bullet's limitDependency): a
-// boxed MLCP that the Dantzig solver takes (kernel/complementarity). The derivation,
-// the choices and their limits: docs/physics/contact.md.
+// velocity level). Friction acts along k tangents per point, each boxed by
+// |z_d| <= mu tan(pi/2k) z_n: the k boxes add up to the regular 2k-gon around the
+// Coulomb circle (k = 2: the four-facet pyramid of ODE's dContactApprox1 and Bullet's
+// limitDependency), a boxed MLCP that the Dantzig solver takes (kernel/complementarity).
+// A point sliding at the step's start has one friction row instead, along its slip,
+// boxed by mu z_n: Coulomb's sliding friction in any direction. Tension lines (hoist lines, ropes) are
+// one-sided rows on the distance between two points. The derivation, the choices and
+// their limits: docs/physics/contact.md.
 //
 // The model's own constraints (loop joints, couplers, drivers: a deck moved by a
 // prescribed motion) enter as free rows, J_c v+ = -Phi(q, t + h) / h. Every buffer is
@@ -40,6 +44,10 @@ struct ContactStepOptions {
   /// is singular; eps makes it positive definite at the cost of a contact velocity of
   /// eps z (1e-12 of the impulse scale; docs/physics/contact.md).
   double regularization = 1e-10;
+  /// m/s: a point slipping faster than this at the step's start has one friction row,
+  /// along its slip (mu z_n against the slip: Coulomb's sliding friction); slower points
+  /// stick or start to slip within the pair's friction polygon.
+  double sliding_speed_threshold = 1e-6;
   /// Dantzig first (exact, fast on the positive definite A), then projected Gauss-Seidel
   /// (warm-started from the last step's impulses when the contact set is unchanged),
   /// then Lemke (frictionless problems only).
@@ -52,6 +60,7 @@ struct ContactStepReport {
   int constraint_rows = 0;      ///< the model's constraint rows (free rows, first)
   int contacts = 0;             ///< contact points in the problem
   int active_stops = 0;         ///< joint-stop rows in the problem
+  int taut_lines = 0;           ///< tension-line rows in the problem
   int rows = 0;                 ///< size of the complementarity problem
   bool ok() const { return solve.solved(); }  ///< a step without rows counts as solved
 };
@@ -79,9 +88,28 @@ class ContactStepper {
   /// +1 if stop s acted at its lower bound in the last step (pushing the coordinate up),
   /// -1 at its upper bound, 0 if it was not in the problem.
   double stop_direction(int s) const { return stop_sign_[s]; }
+  /// The impulse of tension line l in the last step [N s, >= 0; 0 if it was slack], and
+  /// its ends and unit direction from end a to end b (world) at the step's start.
+  double line_impulse(int l) const { return line_row_[l] < 0 ? 0.0 : impulses_[line_row_[l]]; }
+  const Vector3& line_point_a_world(int l) const { return line_point_a_[l]; }
+  const Vector3& line_point_b_world(int l) const { return line_point_b_[l]; }
+  const Vector3& line_direction_world(int l) const { return line_direction_[l]; }
+
+  /// Tangent d of k (the friction rows of a point): evenly spaced over half a turn from
+  /// the point's tangent1 (odd k > 1: from tangent2), so that tangent1 is a face normal of
+  /// the friction polygon; k = 1 (a sliding point): tangent1, its slip direction.
+  static Vector3 friction_direction(const ContactPoint& point, int d, int k);
+  /// mu's factor on each direction's box, tan(pi / 2k): the polygon's faces touch the
+  /// circle of radius mu z_n (k = 1: 1).
+  static double friction_box_scale(int k);
 
  private:
   void add_point_row(int row, int link, const Vector3& point, const Vector3& direction, double sign, const Data& data);
+  /// The rows of `report` built: A = J M^-1 J^T, the solve, v+ and q+ (step's second half).
+  ContactStepReport solve_and_advance(ContactStepReport report, double h, VectorX& q, VectorX& v);
+  /// Per point its friction rows: 0 without friction, 1 along its slip if it slips (its
+  /// tangent1 turned into the slip direction), else the pair's friction_directions.
+  void classify_friction(const Data& data);
   /// The chain failed on a problem with friction rows: the fixed point of Dantzig solves
   /// with the friction boxes held at the last normal impulses (z holds the start).
   ComplementarityResult solve_with_fixed_friction_bounds(const ComplementarityProblem& problem, VectorView z,
@@ -97,9 +125,12 @@ class ContactStepper {
   std::vector<int> free_joints_;        ///< joints of type free (stepped in their parent's axes)
   std::vector<ContactPoint> points_;
   int contact_count_ = 0;
-  std::vector<int> contact_first_row_;  ///< per point: its normal row (tangents follow if mu > 0)
+  std::vector<int> contact_first_row_;  ///< per point: its normal row (its friction rows follow)
+  std::vector<int> friction_rows_;      ///< per point: friction rows (classify_friction)
   std::vector<int> stop_row_;           ///< per stop: its row, -1 if not in the problem
   std::vector<double> stop_sign_;       ///< per stop: +1 lower bound reached, -1 upper
+  std::vector<int> line_row_;           ///< per line: its row, -1 if slack beyond the margin
+  std::vector<Vector3> line_point_a_, line_point_b_, line_direction_;  ///< per line, world
   int previous_rows_ = -1;
   VectorX zero_acceleration_, free_velocity_, velocity_next_;
   VectorX configuration_next_;
