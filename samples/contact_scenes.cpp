@@ -198,4 +198,29 @@ ContactScene load_on_heaving_line(const HeavingTip& tip, double length, double m
   return scene;
 }
 
+StopScene load_on_heaving_floor(const HeavingTip& floor, double mass, double restitution, double drop) {
+  ModelBuilder builder;
+  builder.add_body({"floor", solid_box(1e4, Vector3(1, 1, 0.1)), std::nullopt});
+  builder.add_body({"load", solid_box(mass, Vector3(0.5, 0.5, 0.5)), std::nullopt});
+  builder.add_joint(joint_definition("floor_heave", JointKind::prismatic, "ground", "floor", Vector3::UnitZ()));
+  builder.add_joint(joint_definition("lift", JointKind::prismatic, "floor", "load", Vector3::UnitZ()));
+  DriverDefinition motion;
+  motion.name = "floor_motion";
+  motion.joint = "floor_heave";
+  motion.motion = [a = floor.amplitude, w = floor.omega](double t) {
+    return DriverMotion{a * std::sin(w * t), a * w * std::cos(w * t), -a * w * w * std::sin(w * t)};
+  };
+  builder.add_driver(motion);
+  builder.add_joint_stop({"lift.lower", "lift", 0.0, true, restitution});
+  StopScene scene;
+  scene.model = std::make_shared<const Model>(builder.build());
+  const Model& model = *scene.model;
+  scene.q = model.neutral_configuration();
+  scene.v = VectorX::Zero(model.nv);
+  scene.v[model.joints[model.joint_index("floor_heave")].v_index] = floor.amplitude * floor.omega;
+  scene.q[model.joints[model.joint_index("lift")].q_index] = drop;
+  if (drop > 0.0) scene.v[model.joints[model.joint_index("lift")].v_index] = -floor.amplitude * floor.omega;  // at rest
+  return scene;
+}
+
 }  // namespace heavesim::samples

@@ -60,4 +60,17 @@ struct HeavingTip {
 };
 ContactScene load_on_heaving_line(const HeavingTip& tip, double length, double mass, double restitution);
 
+/// A load resting on a floor that heaves, by a one-sided joint stop rather than a
+/// contact pair (the event-located stop of kernel/system/joint_stop_events.hpp): the
+/// floor (body "floor") on a prismatic z joint driven by z_floor(t) = amplitude sin(omega
+/// t) (driver "floor_motion"; amplitude 0: still), the load (body "load", `mass` [kg]) on
+/// a prismatic z joint "lift" from the floor, its height above it s >= 0 by the stop
+/// "lift.lower" at s = 0 (restitution e). Initial state: the load at height `drop` above
+/// the floor, at rest (drop = 0: on it, moving with it).
+struct StopScene {
+  std::shared_ptr<const Model> model;
+  VectorX q, v;
+};
+StopScene load_on_heaving_floor(const HeavingTip& floor, double mass, double restitution, double drop);
+
 }  // namespace heavesim::samples

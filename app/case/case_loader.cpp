@@ -529,12 +529,19 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
   if (auto section = root.optional("forces")) read_forces(*section, definition, names);
   if (auto section = root.optional("contacts")) read_contacts(*section, definition);
   read_solver(root["solver"], definition);
-  if (!definition.contacts.empty() && definition.solver.integrator.method != IntegrationMethod::contact) {
+  // Contacts run under `contact` (velocity-level stepping); under `ida` joint stops alone
+  // (event-located). The other integrators take the penalty models only.
+  const IntegrationMethod method = definition.solver.integrator.method;
+  const bool stops_only = definition.contacts.geometries.empty() && definition.contacts.pairs.empty() &&
+                          definition.contacts.lines.empty();
+  if (!definition.contacts.empty() && method != IntegrationMethod::contact &&
+      !(method == IntegrationMethod::ida && stops_only)) {
     const std::optional<NodeReader> integrator = root["solver"].optional("integrator");
     (integrator ? *integrator : root["contacts"])
-        .fail("contacts with the integrator '" + integration_method_name(definition.solver.integrator.method) + "'",
-              "solver.integrator: contact (velocity-level contact stepping; the event-located treatment for the "
-              "other integrators is not built yet)");
+        .fail("contacts with the integrator '" + integration_method_name(method) + "'" +
+                  (method == IntegrationMethod::ida ? " (shapes or lines: ida locates joint stops only)" : ""),
+              "solver.integrator: contact (velocity-level contact stepping: shapes, lines and stops), or ida for "
+              "joint stops alone (event-located impacts)");
   }
   read_output(root.optional("output"), root["solver"], definition);
   if (auto section = root.optional("kinematics")) read_kinematics(*section, definition.kinematics);

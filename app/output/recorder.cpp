@@ -267,7 +267,7 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
        }});
   if (!output.reactions) return;
   for (const Constraint& constraint : model.constraints) {
-    if (constraint.is_driver()) continue;  // in /drivers (define_driver_channels)
+    if (constraint.is_driver() || constraint.is_unilateral()) continue;  // drivers: /drivers; stops: the contacts element
     const std::string base = "/constraints/" + constraint.name;
     const int rows = static_cast<int>(constraint.rows.size());
     std::vector<std::string> labels, units;

@@ -39,7 +39,10 @@ void build_contacts(const CaseDefinition& definition, MultibodySystem& system) {
                               line.restitution});
   }
   try {
-    system.set_contacts(std::make_unique<ContactForces>("contacts", model, resolved));
+    auto element = std::make_unique<ContactForces>("contacts", model, resolved);
+    // Event-located stops (IDA): their forces are the multipliers of the model's stop rows.
+    if (definition.solver.integrator.method == IntegrationMethod::ida) element->bind_stop_rows(model);
+    system.set_contacts(std::move(element));
   } catch (const ParameterError& error) {
     throw to_input_error(definition, "contacts", error, {});
   }

@@ -1,5 +1,7 @@
 #include "app/scene/scene.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "app/scene/contact_scene.hpp"
@@ -105,11 +107,24 @@ Scene build_scene(const CaseDefinition& definition) {
   for (const ExpressionConstraintDefinition& constraint : definition.expression_constraints)
     builder.add_expression_constraint(constraint);
   for (const DriverDefinition& driver : definition.drivers) builder.add_driver(driver);
+  // Under IDA a joint stop is met by event location: each bound a constraint row that
+  // holds while the stop is engaged (kernel/system/joint_stop_events.hpp). The contact
+  // integrator steps the stops itself (the `contacts` element).
+  if (definition.solver.integrator.method == IntegrationMethod::ida)
+    for (const JointStopDefinition& stop : definition.contacts.joint_stops)
+      for (const bool lower : {true, false})
+        if (const double bound = lower ? stop.lower : stop.upper; std::isfinite(bound))
+          builder.add_joint_stop({stop.name + (lower ? ".lower" : ".upper"), stop.joint, bound, lower, stop.restitution});
 
   Scene scene;
   try {
     scene.model = std::make_shared<const Model>(builder.build());
   } catch (const ModelError& error) {
+    // A stop's rows: its item in `contacts` (the contact check says the same of it).
+    for (std::size_t s = 0; s < definition.contacts.joint_stops.size(); ++s)
+      if (error.item().rfind(definition.contacts.joint_stops[s].name + ".", 0) == 0)
+        throw definition.error_at(fmt::format("contacts.joint_stops[{}].{}", s, error.field()), error.found(),
+                                  error.expected());
     throw to_input_error(definition, error);
   }
   const Model& model = *scene.model;

@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "app/case/case_definition.hpp"
@@ -13,9 +15,12 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
 
   fmt::print("case '{}' ({})\n", definition.name, case_path);
   if (!definition.description.empty()) fmt::print("  {}\n", definition.description);
-  fmt::print("model: {} bodies, {} joints, {} degrees of freedom (nq = {}, nv = {}), {} loop constraints, "
+  const auto stops = std::count_if(model.constraints.begin(), model.constraints.end(),
+                                   [](const Constraint& constraint) { return constraint.is_unilateral(); });
+  fmt::print("model: {} bodies, {} joints, {} degrees of freedom (nq = {}, nv = {}), {} loop constraints{}, "
              "total mass {:.6g} kg\n",
-             model.num_links() - 1, model.num_links() - 1, model.nv, model.nq, model.nv, model.constraints.size(),
+             model.num_links() - 1, model.num_links() - 1, model.nv, model.nq, model.nv,
+             model.constraints.size() - stops, stops ? fmt::format(" and {} joint-stop bounds", stops) : "",
              model.total_mass());
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];

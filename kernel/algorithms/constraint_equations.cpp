@@ -106,6 +106,7 @@ Force row_direction(const ConstraintRow& row, const FrameState& f) {
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
     case ConstraintRowKind::expression:
+    case ConstraintRowKind::stop:
       break;
   }
   return Force::Zero();
@@ -139,6 +140,7 @@ Force row_direction_rate(const ConstraintRow& row, const FrameState& f) {
     case ConstraintRowKind::coupler:
     case ConstraintRowKind::driver:
     case ConstraintRowKind::expression:
+    case ConstraintRowKind::stop:
       break;
   }
   return Force::Zero();
@@ -197,6 +199,11 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
           q[model.joints[driver->joint].q_index + driver->coordinate] - driver->motion(t).position;
       continue;
     }
+    if (const auto* stop = std::get_if<JointStopConstraint>(&constraint.kind)) {
+      residual[constraint.first_row] = data.constraint_active[constraint.first_row] *
+                                       stop->side * (q[model.joints[stop->joint].q_index] - stop->bound);
+      continue;
+    }
     if (const auto* expression = std::get_if<ExpressionConstraint>(&constraint.kind)) {
       residual[constraint.first_row] = expression->function->value(gather(expression->q_index, q).data(), t);
       continue;
@@ -226,7 +233,8 @@ void constraint_residual(const Model& model, const Data& data, const VectorX& q,
           break;
         case ConstraintRowKind::coupler:
         case ConstraintRowKind::driver:
-        case ConstraintRowKind::expression: break;
+        case ConstraintRowKind::expression:
+        case ConstraintRowKind::stop: break;
       }
     }
     // A driver on frames: its one row is the measured coordinate minus f(t).
@@ -251,6 +259,11 @@ void constraint_jacobian(const Model& model, const Data& data, double t, Eigen::
     }
     if (const auto* driver = std::get_if<DriverConstraint>(&constraint.kind)) {
       jacobian(constraint.first_row, model.joints[driver->joint].v_index + driver->coordinate) = 1.0;
+      continue;
+    }
+    if (const auto* stop = std::get_if<JointStopConstraint>(&constraint.kind)) {
+      jacobian(constraint.first_row, model.joints[stop->joint].v_index) =
+          data.constraint_active[constraint.first_row] * stop->side;
       continue;
     }
     if (const auto* coupler = std::get_if<CouplerConstraint>(&constraint.kind)) {
@@ -292,7 +305,7 @@ void constraint_bias(const Model& model, const Data& data, double t, Eigen::Ref<
       bias[constraint.first_row] = driver->motion(t).acceleration;
       continue;
     }
-    if (std::holds_alternative<CouplerConstraint>(constraint.kind)) {
+    if (std::holds_alternative<CouplerConstraint>(constraint.kind) || constraint.is_unilateral()) {
       bias[constraint.first_row] = 0.0;
       continue;
     }
@@ -346,6 +359,11 @@ void add_constraint_loads(const Model& model, const Data& data, double t, const 
       const double force = lambda[constraint.first_row];
       tau[model.joints[coupler->joint_a].v_index] += force;
       tau[model.joints[coupler->joint_b].v_index] -= coupler->ratio * force;
+      continue;
+    }
+    if (const auto* stop = std::get_if<JointStopConstraint>(&constraint.kind)) {
+      tau[model.joints[stop->joint].v_index] += data.constraint_active[constraint.first_row] * stop->side *
+                                                lambda[constraint.first_row];
       continue;
     }
     const Force wrench = constraint_wrench(model, data, constraint, lambda);

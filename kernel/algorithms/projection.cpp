@@ -68,16 +68,23 @@ ConstraintRank analyse_constraint_rank(const Model& model, Data& data, double t,
   Eigen::ColPivHouseholderQR<MatrixX> qr(data.constraint_jacobian.transpose());
   qr.setThreshold(relative_threshold);
   result.rank = static_cast<int>(qr.rank());
-  // Pivoting brings independent rows (columns of J^T) first; the rest depend on them.
-  for (int k = result.rank; k < result.rows; ++k) result.redundant_rows.push_back(qr.colsPermutation().indices()[k]);
+  // Pivoting brings independent rows (columns of J^T) first; the rest depend on them. An
+  // inactive row (zero) is among the rest, but it is not redundant: it is not there.
+  for (int k = result.rank; k < result.rows; ++k) {
+    const int row = qr.colsPermutation().indices()[k];
+    (data.constraint_active[row] != 0.0 ? result.redundant_rows : result.inactive_rows).push_back(row);
+  }
   std::sort(result.redundant_rows.begin(), result.redundant_rows.end());
+  std::sort(result.inactive_rows.begin(), result.inactive_rows.end());
   return result;
 }
 
 std::vector<int> ConstraintRank::independent_rows() const {
   std::vector<int> kept;
   for (int row = 0; row < rows; ++row)
-    if (!std::binary_search(redundant_rows.begin(), redundant_rows.end(), row)) kept.push_back(row);
+    if (!std::binary_search(redundant_rows.begin(), redundant_rows.end(), row) &&
+        !std::binary_search(inactive_rows.begin(), inactive_rows.end(), row))
+      kept.push_back(row);
   return kept;
 }
 

@@ -31,6 +31,7 @@ struct ConstraintRank {
   int rows = 0;
   int rank = 0;
   std::vector<int> redundant_rows;  // row indices; the reactions along them are not unique
+  std::vector<int> inactive_rows;   // rows that do not hold now (joint stops not in contact), ascending
   /// The other rows, ascending: the ones a form keeps.
   std::vector<int> independent_rows() const;
 };

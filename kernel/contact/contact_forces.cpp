@@ -56,9 +56,44 @@ void ContactForces::apply(double, const Model&, const Data&, Eigen::Ref<const Ve
   forces.joint_force += joint_force_;
 }
 
-void ContactForces::outputs(double, const Model&, const Data&, Eigen::Ref<const VectorX>,
+void ContactForces::outputs(double, const Model&, const Data& data, Eigen::Ref<const VectorX>,
                             std::span<double> values) const {
   for (std::size_t c = 0; c < values.size(); ++c) values[c] = channel_values_[c];
+  // Event-located stops: the force is the multiplier of the active row (zero inactive).
+  const std::size_t first_stop = 3 * contacts_.pairs.size();
+  for (std::size_t s = 0; s < stop_rows_.size(); ++s) {
+    double force = 0.0;
+    for (const auto& [row, side] : stop_rows_[s]) force += side * data.constraint_active[row] * data.constraint_multipliers[row];
+    values[first_stop + s] = force;
+  }
+}
+
+void ContactForces::bind_stop_rows(const Model& model) {
+  stop_rows_.assign(contacts_.joint_stops.size(), {});
+  const std::size_t first_stop = 3 * contacts_.pairs.size();
+  for (std::size_t s = 0; s < contacts_.joint_stops.size(); ++s) {
+    const JointStop& stop = contacts_.joint_stops[s];
+    channels_[first_stop + s].description = "generalized force of stop '" + stop.name + "' on joint '" +
+                                            model.joints[stop.joint].name +
+                                            "' (> 0 along the coordinate): the multiplier of its engaged bound";
+    channels_[impulse_channel_[contacts_.pairs.size() + s]].description =
+        "generalized impulse of the impacts on stop '" + stop.name +
+        "' since the start (running total, > 0 along the coordinate; the force between impacts is <stop>_force)";
+    for (const Constraint& constraint : model.constraints)
+      if (const auto* row = std::get_if<JointStopConstraint>(&constraint.kind);
+          row && row->joint == stop.joint && row->bound == (row->side > 0.0 ? stop.lower : stop.upper))
+        stop_rows_[s].emplace_back(constraint.first_row, row->side);
+  }
+}
+
+void ContactForces::add_stop_row_impulse(int row, double impulse) {
+  for (std::size_t s = 0; s < stop_rows_.size(); ++s)
+    for (const auto& [stop_row, side] : stop_rows_[s])
+      if (stop_row == row) {
+        const std::size_t total = contacts_.pairs.size() + s;
+        impulse_totals_[total] += impulse;
+        channel_values_[impulse_channel_[total]] = impulse_totals_[total];
+      }
 }
 
 void ContactForces::clear() {

@@ -32,6 +32,14 @@ class ContactForces : public ForceElement {
   /// Running totals of the impulses back to zero (the start of a run).
   void reset_impulses() { impulse_totals_.setZero(); }
 
+  /// The joint stops as the model's JointStopConstraint rows (event-located under IDA,
+  /// kernel/system/joint_stop_events.hpp): each stop's force is then read from the
+  /// multipliers of its rows at output time, and its impulses come from the events.
+  void bind_stop_rows(const Model& model);
+  /// An impact's generalized impulse on the stop of constraint row `row` [N s or N m s,
+  /// > 0 along the coordinate], added to its running total.
+  void add_stop_row_impulse(int row, double impulse);
+
  private:
   std::string name_;
   ContactModel contacts_;
@@ -43,6 +51,8 @@ class ContactForces : public ForceElement {
   std::vector<Vector3> friction_sum_;       ///< per pair, world [N]
   VectorX impulse_totals_;                  ///< per pair its normal impulse, per stop its impulse, since the start [N s]
   std::vector<int> impulse_channel_;        ///< the channel of each running total
+  /// Per stop, its constraint rows and their sides (bind_stop_rows; empty: stepped stops).
+  std::vector<std::vector<std::pair<int, double>>> stop_rows_;
 };
 
 }  // namespace heavesim

@@ -106,11 +106,27 @@ void IdaIntegrator::store_jacobian(SUNMatrix J) const {
   column_start[n] = k;
 }
 
+int IdaIntegrator::event_functions(double t, N_Vector y, N_Vector, double* g, void* user_data) {
+  auto* self = static_cast<IdaIntegrator*>(user_data);
+  return sundials::guarded(self->callback_error_, [&] {
+    self->work_y_ = sundials::map(y);
+    self->dae_.event_values(t, self->work_y_, self->event_values_);
+    Eigen::Map<VectorX>(g, self->event_values_.size()) = self->event_values_;
+  });
+}
+
 void IdaIntegrator::initialize(double t0, const VectorX& y0) {
+  state_ = y0;
+  before_restarts_ = {};
+  events_ = 0;
+  dae_.start_events(t0, state_);
+  restart(t0);
+}
+
+void IdaIntegrator::restart(double t0) {
   release();
   t_ = t0;
-  state_ = y0;
-  dae_.dae_initial_values(t0, y0, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
+  dae_.dae_initial_values(t0, state_, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
   const int n = dae_.dae_size();
   work_r_.resize(n);
   y_nv_ = N_VNew_Serial(n, context_);
@@ -124,6 +140,17 @@ void IdaIntegrator::initialize(double t0, const VectorX& y0) {
 
   ida_ = IDACreate(context_);
   IDAInit(ida_, &IdaIntegrator::residual, t0, y_nv_, yp_nv_);
+  // IDA's warnings go to stderr by default. The one events raise -- an event function
+  // still zero after the first step (a stop let go with no speed yet) -- is expected: the
+  // function waits until it leaves zero. Errors are still printed, and also reported by
+  // the flags (report_failure).
+  IDASetErrHandlerFn(
+      ida_,
+      [](int error_code, const char* module, const char* function, char* message, void*) {
+        if (error_code == IDA_WARNING) return;
+        std::fprintf(stderr, "\n[%s ERROR]  %s\n  %s\n\n", module, function, message);
+      },
+      nullptr);
   IDASetUserData(ida_, this);
   // Error weights (error_weights below): the differential components' usual
   // 1 / (rtol |y| + atol); the multipliers take no part in the error test
@@ -156,95 +183,125 @@ void IdaIntegrator::initialize(double t0, const VectorX& y0) {
   }
   IDASetLinearSolver(ida_, linear_solver_, matrix_);
   if (analytic) IDASetJacFn(ida_, &IdaIntegrator::jacobian);
+  // Events: located where a function falls through zero (a gap closing, a stop's force
+  // turning to a pull); one that is zero at t0 waits until it has left zero.
+  if (const int count = dae_.event_count(); count > 0) {
+    event_values_.resize(count);
+    events_found_.assign(count, 0);
+    IDARootInit(ida_, count, &IdaIntegrator::event_functions);
+    std::vector<int> falling(count, -1);
+    IDASetRootDirection(ida_, falling.data());
+  }
 }
 
 void IdaIntegrator::advance_to(double t_out) {
   if (t_out <= t_) return;
-  double t_reached = t_;
-  const int flag = IDASolve(ida_, t_out, &t_reached, y_nv_, yp_nv_, IDA_NORMAL);
-  if (flag < 0) {
-    callback_error_.rethrow_if_set();
-    double h = 0.0;
-    IDAGetLastStep(ida_, &h);
-    char reached[96];
-    std::snprintf(reached, sizeof reached, ") after reaching t = %.9g s with last step %.3g s", t_reached, h);
-    std::string what = std::string("IDA failed (") + sundials::take_flag_name(IDAGetReturnFlagName(flag)) + reached;
-    // Where: the differential component with the largest weighted local error of the
-    // last step attempted, and what the state looked like there.
-    N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
-    if (IDAGetEstLocalErrors(ida_, errors) == IDA_SUCCESS && IDAGetErrWeights(ida_, weights) == IDA_SUCCESS)
-      what += sundials::largest_local_error(dae_, errors, weights, id_nv_);  // differential components
-    N_VDestroy(errors);
-    N_VDestroy(weights);
-    // The last state IDA reached, examined as the explicit path examines its own: the
-    // loops (a driver beyond their reach, a singular configuration), then the fastest
-    // mode, which IDA must resolve when it is an excited, barely damped oscillation.
-    N_Vector current = nullptr;
-    const bool have_state = IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current;
-    const VectorX last_state = have_state ? VectorX(sundials::map(current)) : VectorX();
-    const StateDiagnosis note = have_state ? dae_.state_note(t_reached, last_state) : StateDiagnosis{};
-    if (!note.empty()) {
-      throw NumericalError(t_reached, what + "; " + note.what,
-                           !note.suggestion.empty()
-                               ? note.suggestion
-                               : "the index-2 form cannot resolve the multipliers where the loops lose rank: "
-                                 "solver.integrator: hht carries a mechanism through singular configurations");
+  while (true) {
+    double t_reached = t_;
+    const int flag = IDASolve(ida_, t_out, &t_reached, y_nv_, yp_nv_, IDA_NORMAL);
+    if (flag < 0) report_failure(flag, t_out, t_reached);
+    if (flag != IDA_ROOT_RETURN) break;
+    // An event at t_reached: the system's handler gives the state to go on from.
+    IDAGetRootInfo(ida_, events_found_.data());
+    work_y_ = sundials::map(y_nv_);
+    dae_.state_from_dae(work_y_, state_);
+    ++events_;
+    if (dae_.handle_events(t_reached, work_y_, events_found_, state_)) {
+      const IntegratorStatistics counts = statistics();
+      before_restarts_ = counts;
+      before_restarts_.events = 0;
+      restart(t_reached);
     }
-    // Only too much work can be a fast mode's doing: the linearization (an eigenvalue
-    // problem) is not done for the other failures.
-    const FastestMode mode =
-        have_state && flag == IDA_TOO_MUCH_WORK ? dae_.fastest_mode_note(t_reached, last_state) : FastestMode{};
-    // About ten steps per period resolve an oscillation at IDA's usual tolerances; the
-    // mode is the cause when it alone needs a tenth of the allowed steps.
-    const double interval = t_out - t_, omega = std::abs(mode.eigenvalue.imag());
-    const double periods = interval * omega / (2.0 * std::numbers::pi), steps_needed = 10.0 * periods;
-    if (flag == IDA_TOO_MUCH_WORK && mode.found() && omega >= std::abs(mode.eigenvalue.real()) &&
-        steps_needed >= 0.1 * static_cast<double>(settings_.max_steps_per_output)) {
-      char text[200];
-      std::snprintf(text, sizeof text,
-                    ": a barely damped oscillation that IDA resolves, about %.3g of its periods in the output "
-                    "interval of %.3g s (solver.max_steps = %ld)",
-                    periods, interval, settings_.max_steps_per_output);
-      std::string suggestion = "solver.integrator: hht steps over a fast oscillation it need not resolve (A-stable, "
-                               "fixed step)";
-      if (!mode.element.empty()) suggestion += "; or damp or soften " + mode.element;
-      char steps[64];
-      std::snprintf(steps, sizeof steps, "; or solver.max_steps above %.3g", steps_needed);
-      throw NumericalError(t_reached, what + "; " + mode.description() + text, suggestion + steps);
-    }
-    std::string suggestion;
-    switch (flag) {
-      case IDA_TOO_MUCH_WORK:
-        suggestion = "the step size collapsed or the output interval is long: raise solver.max_steps or look "
-                     "for a stiff or discontinuous force";
-        break;
-      case IDA_ERR_FAIL:
-      case IDA_CONV_FAIL:
-        suggestion = "step-size collapse: the solution changes abruptly; loosen tolerances, check force "
-                     "elements for discontinuities or unstable parameters, or a singular loop configuration";
-        break;
-      default:
-        suggestion = "check the model for singular configurations or non-finite forces";
-    }
-    throw NumericalError(t_reached, what, suggestion);
+    t_ = t_reached;
+    if (t_reached >= t_out) break;
   }
   t_ = t_out;
   work_y_ = sundials::map(y_nv_);
   dae_.state_from_dae(work_y_, state_);
 }
 
+void IdaIntegrator::report_failure(int flag, double t_out, double t_reached) {
+  callback_error_.rethrow_if_set();
+  double h = 0.0;
+  IDAGetLastStep(ida_, &h);
+  char reached[96];
+  std::snprintf(reached, sizeof reached, ") after reaching t = %.9g s with last step %.3g s", t_reached, h);
+  std::string what = std::string("IDA failed (") + sundials::take_flag_name(IDAGetReturnFlagName(flag)) + reached;
+  // Where: the differential component with the largest weighted local error of the
+  // last step attempted, and what the state looked like there.
+  N_Vector errors = N_VClone(y_nv_), weights = N_VClone(y_nv_);
+  if (IDAGetEstLocalErrors(ida_, errors) == IDA_SUCCESS && IDAGetErrWeights(ida_, weights) == IDA_SUCCESS)
+    what += sundials::largest_local_error(dae_, errors, weights, id_nv_);  // differential components
+  N_VDestroy(errors);
+  N_VDestroy(weights);
+  // The last state IDA reached, examined as the explicit path examines its own: the
+  // loops (a driver beyond their reach, a singular configuration), then the fastest
+  // mode, which IDA must resolve when it is an excited, barely damped oscillation.
+  N_Vector current = nullptr;
+  const bool have_state = IDAGetCurrentY(ida_, &current) == IDA_SUCCESS && current;
+  const VectorX last_state = have_state ? VectorX(sundials::map(current)) : VectorX();
+  const StateDiagnosis note = have_state ? dae_.state_note(t_reached, last_state) : StateDiagnosis{};
+  if (!note.empty()) {
+    throw NumericalError(t_reached, what + "; " + note.what,
+                         !note.suggestion.empty()
+                             ? note.suggestion
+                             : "the index-2 form cannot resolve the multipliers where the loops lose rank: "
+                               "solver.integrator: hht carries a mechanism through singular configurations");
+  }
+  // Only too much work can be a fast mode's doing: the linearization (an eigenvalue
+  // problem) is not done for the other failures.
+  const FastestMode mode =
+      have_state && flag == IDA_TOO_MUCH_WORK ? dae_.fastest_mode_note(t_reached, last_state) : FastestMode{};
+  // About ten steps per period resolve an oscillation at IDA's usual tolerances; the
+  // mode is the cause when it alone needs a tenth of the allowed steps.
+  const double interval = t_out - t_, omega = std::abs(mode.eigenvalue.imag());
+  const double periods = interval * omega / (2.0 * std::numbers::pi), steps_needed = 10.0 * periods;
+  if (flag == IDA_TOO_MUCH_WORK && mode.found() && omega >= std::abs(mode.eigenvalue.real()) &&
+      steps_needed >= 0.1 * static_cast<double>(settings_.max_steps_per_output)) {
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  ": a barely damped oscillation that IDA resolves, about %.3g of its periods in the output "
+                  "interval of %.3g s (solver.max_steps = %ld)",
+                  periods, interval, settings_.max_steps_per_output);
+    std::string suggestion = "solver.integrator: hht steps over a fast oscillation it need not resolve (A-stable, "
+                             "fixed step)";
+    if (!mode.element.empty()) suggestion += "; or damp or soften " + mode.element;
+    char steps[64];
+    std::snprintf(steps, sizeof steps, "; or solver.max_steps above %.3g", steps_needed);
+    throw NumericalError(t_reached, what + "; " + mode.description() + text, suggestion + steps);
+  }
+  std::string suggestion;
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK:
+      suggestion = "the step size collapsed or the output interval is long: raise solver.max_steps or look "
+                   "for a stiff or discontinuous force";
+      break;
+    case IDA_ERR_FAIL:
+    case IDA_CONV_FAIL:
+      suggestion = "step-size collapse: the solution changes abruptly; loosen tolerances, check force "
+                   "elements for discontinuities or unstable parameters, or a singular loop configuration";
+      break;
+    default:
+      suggestion = "check the model for singular configurations or non-finite forces";
+  }
+  throw NumericalError(t_reached, what, suggestion);
+}
+
 IntegratorStatistics IdaIntegrator::statistics() const {
-  IntegratorStatistics s;
+  // The counts of this IDA instance added to those of the instances before the last
+  // event restart.
+  IntegratorStatistics s = before_restarts_;
+  s.events = events_;
   if (!ida_) return s;
   long value = 0;
-  IDAGetNumSteps(ida_, &s.steps);
-  IDAGetNumResEvals(ida_, &s.rhs_evaluations);
-  IDAGetNumLinResEvals(ida_, &value);
-  s.rhs_evaluations += value;
-  IDAGetNumJacEvals(ida_, &s.jacobian_evaluations);
-  IDAGetNumErrTestFails(ida_, &s.error_test_failures);
-  IDAGetNumNonlinSolvIters(ida_, &s.nonlinear_iterations);
-  IDAGetNumNonlinSolvConvFails(ida_, &s.convergence_failures);
+  const auto add = [](long& total, long count) { total += count; };
+  IDAGetNumSteps(ida_, &value), add(s.steps, value);
+  IDAGetNumResEvals(ida_, &value), add(s.rhs_evaluations, value);
+  IDAGetNumLinResEvals(ida_, &value), add(s.rhs_evaluations, value);
+  IDAGetNumJacEvals(ida_, &value), add(s.jacobian_evaluations, value);
+  IDAGetNumErrTestFails(ida_, &value), add(s.error_test_failures, value);
+  IDAGetNumNonlinSolvIters(ida_, &value), add(s.nonlinear_iterations, value);
+  IDAGetNumNonlinSolvConvFails(ida_, &value), add(s.convergence_failures, value);
   IDAGetLastStep(ida_, &s.last_step);
   return s;
 }

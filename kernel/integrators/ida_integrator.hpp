@@ -13,7 +13,9 @@ namespace heavesim {
 /// model's stabilized index-2 form (GglDaeForm, with its algebraic multipliers excluded
 /// from the error test), or a plain ODE written as F = y' - f(t, y) (OdeResidual). Newton matrices come from the system when it
 /// provides them (dense, or sparse through KLU), else from IDA's difference quotients.
-/// Suited to stiff force elements (hydraulics, end stops) and closed loops.
+/// Suited to stiff force elements (hydraulics, end stops) and closed loops. Events of the
+/// system (DaeSystem::event_count: joint stops) are located by IDA's root finding; at
+/// each, the system's handler gives the state to restart from.
 class IdaIntegrator : public Integrator {
  public:
   IdaIntegrator(DaeSystem& system, const IntegratorSettings& settings) : settings_(settings), dae_(system) {}
@@ -26,6 +28,11 @@ class IdaIntegrator : public Integrator {
 
  private:
   static int residual(double t, N_Vector y, N_Vector yp, N_Vector r, void* user_data);
+  static int event_functions(double t, N_Vector y, N_Vector yp, double* g, void* user_data);
+  /// IDA set up afresh at (t0, state_) (the start, or after an event changed the state).
+  void restart(double t0);
+  /// Throws the NumericalError of a failed IDASolve (flag < 0) on the way to t_out.
+  [[noreturn]] void report_failure(int flag, double t_out, double t_reached);
   static int error_weights(N_Vector y, N_Vector ewt, void* user_data);
   static int jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user_data,
                       N_Vector, N_Vector, N_Vector);
@@ -45,6 +52,10 @@ class IdaIntegrator : public Integrator {
   VectorX constraint_scale_;  // DaeSystem::algebraic_constraint_scales
   MatrixX work_jacobian_;
   std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
+  std::vector<int> events_found_;             // IDAGetRootInfo
+  VectorX event_values_;
+  IntegratorStatistics before_restarts_;      // the counts of the IDA instances an event ended
+  long events_ = 0;
   double t_ = 0.0;
 };
 

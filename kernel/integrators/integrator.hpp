@@ -50,6 +50,7 @@ struct IntegratorStatistics {
   long error_test_failures = 0;
   long nonlinear_iterations = 0;
   long convergence_failures = 0;
+  long events = 0;                   // located events handled (impacts, stops engaging or releasing)
   double last_step = 0.0;            // s
 };
 

@@ -12,6 +12,7 @@
 //   length         |p_B - p_A|                 (a distance driver's measured coordinate, m)
 //   angle          atan2(y_A . x_B, x_A . x_B) (an angle driver's: x_B's angle about z_A, rad)
 //   expression     f(x, t) = 0                 (a user function of scalar joint coordinates x)
+//   stop           side (q_j - bound) = 0      (a joint stop while it holds: one-sided)
 //
 // Drivers on frames (absolute: an `along` row on a world-fixed frame A; distance: a
 // `length` row; angle: an `angle` row) subtract f(t) from their row, so that every
@@ -33,7 +34,7 @@
 
 namespace heavesim {
 
-enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver, length, angle, expression };
+enum class ConstraintRowKind { along, perpendicular, distance, coupler, driver, length, angle, expression, stop };
 
 struct ConstraintRow {
   ConstraintRowKind kind = ConstraintRowKind::along;
@@ -97,9 +98,22 @@ struct ExpressionConstraint {
   std::vector<int> q_index, v_index;
   std::shared_ptr<const ConstraintFunction> function;
 };
+/// A one-sided stop on the coordinate of a 1-DoF joint, met by event location
+/// (kernel/system/joint_stop_events.hpp): side (q - bound) >= 0, with side = +1 at a
+/// lower bound and -1 at an upper one. Its row, side (q - bound) = 0, holds only while
+/// the stop is active (Data::constraint_active); then its multiplier is the stop's
+/// compressive force (>= 0; generalized force side lambda on the joint). Inactive, the
+/// row is zero and counts nowhere. Restitution e at impacts faster than the events'
+/// threshold.
+struct JointStopConstraint {
+  int joint = 0;        // model joint index (nq = nv = 1)
+  double bound = 0.0;   // m or rad
+  double side = 1.0;    // +1: q >= bound (lower); -1: q <= bound (upper)
+  double restitution = 0.0;
+};
 using ConstraintKind = std::variant<LoopJointConstraint, DistanceConstraint, CouplerConstraint, DriverConstraint,
                                     AbsoluteDriverConstraint, DistanceDriverConstraint, AngleDriverConstraint,
-                                    ExpressionConstraint>;
+                                    ExpressionConstraint, JointStopConstraint>;
 
 struct Constraint {
   std::string name;
@@ -131,12 +145,14 @@ struct Constraint {
         kind);
   }
   bool is_driver() const { return driver_motion() != nullptr; }
+  /// A joint stop: a row that holds only while active (unilateral).
+  bool is_unilateral() const { return std::holds_alternative<JointStopConstraint>(kind); }
   /// "loop joint", "distance constraint", "coupler", "driver", "absolute driver",
-  /// "distance driver", "angle driver" or "expression constraint".
+  /// "distance driver", "angle driver", "expression constraint" or "joint stop".
   const char* kind_name() const {
     static constexpr const char* names[] = {"loop joint",      "distance constraint", "coupler",     "driver",
                                             "absolute driver", "distance driver",     "angle driver",
-                                            "expression constraint"};
+                                            "expression constraint", "joint stop"};
     return names[kind.index()];
   }
 };

@@ -34,6 +34,9 @@ Data::Data(const Model& model)
   constraint_bias = VectorX::Zero(m);
   constraint_multipliers = VectorX::Zero(m);
   constraint_row_used = VectorX::Ones(m);
+  constraint_active = VectorX::Ones(m);
+  for (const Constraint& constraint : model.constraints)
+    if (constraint.is_unilateral()) constraint_active.segment(constraint.first_row, constraint.rows.size()).setZero();
   kkt_minv_jt = MatrixX::Zero(model.nv, m);
   kkt_schur = MatrixX::Zero(m, m);
   kkt_rhs = VectorX::Zero(m);

@@ -101,6 +101,10 @@ struct Data {
   // default every row is used and constraint_rows_set_aside is false.
   VectorX constraint_row_used;      // m
   bool constraint_rows_set_aside = false;
+  // Whether each row holds now (1) or not (0): a joint stop's row only while the stop is
+  // active (joint_stop_events.hpp); every other row always. An inactive row is zero in
+  // Phi, J, nu and gamma, and takes no part in a form's rows.
+  VectorX constraint_active;        // m
   MatrixX kkt_minv_jt;              // M^-1 J^T (nv x m)
   MatrixX kkt_schur;                // J M^-1 J^T (m x m)
   VectorX kkt_rhs;                  // m

@@ -320,6 +320,23 @@ void ModelBuilder::add_constraints(Model& model) const {
     constraint.rows = {{ConstraintRowKind::expression, 0, 0, "expression"}};
     add(std::move(constraint));
   }
+  for (const JointStopConstraintDefinition& def : stops_) {
+    Constraint constraint = start(def.name, JointStopConstraint{});
+    const int index = model.joint_index(def.joint);
+    if (index < 0)
+      throw constraint_error(def.name, "joint", "'" + def.joint + "', which is not a joint", "the name of a joint");
+    const Joint& joint = model.joints[index];
+    if (joint.nv != 1 || joint.nq != 1)
+      throw constraint_error(def.name, "joint", "a " + joint_type_name(joint.type) + " joint",
+                             "a revolute or prismatic joint");
+    if (!std::isfinite(def.bound)) throw constraint_error(def.name, "bound", format_number(def.bound), "a finite bound");
+    if (!(def.restitution >= 0.0 && def.restitution <= 1.0))
+      throw constraint_error(def.name, "restitution", format_number(def.restitution), "0 <= e <= 1");
+    constraint.kind = JointStopConstraint{index, def.bound, def.lower ? 1.0 : -1.0, def.restitution};
+    constraint.rows = {{ConstraintRowKind::stop, 0, 0,
+                        std::string(def.lower ? "coordinate >= " : "coordinate <= ") + format_number(def.bound)}};
+    add(std::move(constraint));
+  }
 }
 
 Model ModelBuilder::build() const {

@@ -125,6 +125,16 @@ struct DriverDefinition {
   Vector3 direction = Vector3::UnitX();   // absolute: unit, world frame
 };
 
+/// A one-sided stop on a 1-DoF joint's coordinate (JointStopConstraint), met by event
+/// location under IDA: q >= bound (lower) or q <= bound (upper) [m or rad].
+struct JointStopConstraintDefinition {
+  std::string name;
+  std::string joint;
+  double bound = 0.0;
+  bool lower = true;
+  double restitution = 0.0;  // Newton's e in [0, 1]
+};
+
 class ModelBuilder {
  public:
   static constexpr const char* ground_name = "ground";
@@ -141,6 +151,7 @@ class ModelBuilder {
   void add_expression_constraint(ExpressionConstraintDefinition constraint) {
     expressions_.push_back(std::move(constraint));
   }
+  void add_joint_stop(JointStopConstraintDefinition stop) { stops_.push_back(std::move(stop)); }
 
   /// Checks the topology (each body the child of exactly one joint, no cycle, all
   /// connected to ground), the physical data and the constraints; throws ModelError.
@@ -156,6 +167,7 @@ class ModelBuilder {
   std::vector<CouplerDefinition> couplers_;
   std::vector<DriverDefinition> drivers_;
   std::vector<ExpressionConstraintDefinition> expressions_;
+  std::vector<JointStopConstraintDefinition> stops_;
 };
 
 }  // namespace heavesim

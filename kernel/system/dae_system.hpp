@@ -6,6 +6,8 @@
 //
 // The integrator-facing state stays the ODE state of OdeSystem; a DAE may carry
 // extra algebraic unknowns (multipliers) that it maps in and out.
+#include <vector>
+
 #include "kernel/system/ode_system.hpp"
 
 namespace heavesim {
@@ -29,6 +31,23 @@ class DaeSystem : public FailureDiagnosis {
   /// dF/dy + cj dF/dy'; returns false to let the integrator approximate it.
   virtual bool jacobian(double /*t*/, const VectorX& /*y*/, const VectorX& /*yp*/, double /*cj*/,
                         MatrixX& /*J*/) {
+    return false;
+  }
+
+  // --- events (Simbody's event triggers and handlers): functions g_i(t, y) whose fall
+  // through zero the integrator locates, and what happens there ---
+  /// How many event functions there are (0: none).
+  virtual int event_count() const { return 0; }
+  /// g(t, y) (event_count values): an event happens where one falls from > 0 to <= 0.
+  virtual void event_values(double /*t*/, const VectorX& /*y*/, Eigen::Ref<VectorX> /*g*/) {}
+  /// Before the first step from the ODE state `state` at t: events that hold already (a
+  /// body resting on a stop) take effect; `state` may change.
+  virtual void start_events(double /*t*/, VectorX& /*state*/) {}
+  /// At t, where the events with found[i] != 0 fell through zero (y: the DAE's values
+  /// there): the ODE state to go on from, in `state`. Returns true when the integration
+  /// must restart from it (a velocity jump, a changed set of constraints).
+  virtual bool handle_events(double /*t*/, const VectorX& /*y*/, const std::vector<int>& /*found*/,
+                             VectorX& /*state*/) {
     return false;
   }
 };

@@ -6,6 +6,7 @@
 #include "kernel/system/dae_system.hpp"
 #include "kernel/system/dynamics_differentiator.hpp"
 #include "kernel/system/fastest_mode.hpp"
+#include "kernel/system/joint_stop_events.hpp"
 #include "kernel/system/multibody_system.hpp"
 
 namespace heavesim {
@@ -28,6 +29,11 @@ class GglDaeForm final : public DaeSystem {
   FastestMode fastest_mode(double t, const VectorX& y) override {
     return find_fastest_mode(system_, t, y.head(system_.size()));
   }
+  // Joint stops (joint_stop_events.hpp): a free stop's gap, an active stop's multiplier.
+  int event_count() const override { return stop_events_.count(); }
+  void event_values(double t, const VectorX& y, Eigen::Ref<VectorX> g) override;
+  void start_events(double t, VectorX& state) override { stop_events_.start(t, state); }
+  bool handle_events(double t, const VectorX& y, const std::vector<int>& found, VectorX& state) override;
 
  private:
   /// Constraint rows in the DAE: the independent ones at the initial state.
@@ -37,6 +43,7 @@ class GglDaeForm final : public DaeSystem {
 
   MultibodySystem& system_;
   DynamicsDifferentiator differentiator_;
+  JointStopEvents stop_events_;
   std::vector<int> rows_;  // constraint rows kept in the DAE (set by dae_initial_values)
   VectorX w_, qdot_, qdot_plus_, zdot_, vdot_, lambda_, ode_rate_, q_perturbed_;
   MatrixX N_, N_plus_;

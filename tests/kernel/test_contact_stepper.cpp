@@ -14,6 +14,7 @@
 #include "kernel/model/model_builder.hpp"
 #include "samples/contact_scenes.hpp"
 #include "samples/joint_definition.hpp"
+#include "tests/kernel/heaving_support_reference.hpp"
 
 namespace heavesim {
 namespace {
@@ -346,70 +347,6 @@ TEST(ContactStepper, FrictionPolygonHoldsUpToItsSupportInEveryDirection) {
     }
 }
 
-/// The load on a heaving line (samples::load_on_heaving_line) by hand: taut, it moves
-/// with the tip, z = z_tip - L, until the tip's downward acceleration exceeds g; slack, it
-/// flies, until the line is taut again, when a plastic snap (e = 0) gives it the tip's
-/// speed. Transitions are bisected to 1e-13 s.
-class HoistLineReference {
- public:
-  HoistLineReference(const samples::HeavingTip& tip, double length) : tip_(tip), length_(length) {}
-  double z_tip(double t) const { return tip_.amplitude * std::sin(tip_.omega * t); }
-  double v_tip(double t) const { return tip_.amplitude * tip_.omega * std::cos(tip_.omega * t); }
-  double a_tip(double t) const { return -tip_.amplitude * tip_.omega * tip_.omega * std::sin(tip_.omega * t); }
-  /// Load height at each time (ascending); fills the snaps and slack phases met.
-  std::vector<double> load_height(const std::vector<double>& times) {
-    std::vector<double> z;
-    // The current phase: from t0 with the load at (z0, v0), taut or slack, until `end`.
-    double t0 = 0.0, z0 = -length_, v0 = v_tip(0.0);
-    bool taut = true;
-    double end = phase_end(t0, z0, v0, taut);
-    for (const double t : times) {
-      while (t > end) {
-        const double z_end = taut ? z_tip(end) - length_ : z0 + v0 * (end - t0) - 0.5 * g * (end - t0) * (end - t0);
-        const double v_end = taut ? v_tip(end) : v0 - g * (end - t0);
-        if (taut) {
-          taut = false;
-          v0 = v_end;
-        } else {
-          snaps.push_back({end, v_tip(end) - v_end});
-          v0 = v_tip(end);  // plastic snap: the load takes the tip's speed
-          taut = a_tip(end) + g >= 0.0;
-        }
-        t0 = end;
-        z0 = z_end;
-        end = phase_end(t0, z0, v0, taut);
-        if (!taut) phases.push_back({t0, end});
-      }
-      z.push_back(taut ? z_tip(t) - length_ : z0 + v0 * (t - t0) - 0.5 * g * (t - t0) * (t - t0));
-    }
-    return z;
-  }
-  std::vector<std::pair<double, double>> snaps;   ///< (time, jump in the load's speed)
-  std::vector<std::pair<double, double>> phases;  ///< slack intervals
-
- private:
-  /// Taut: until the tip falls away faster than g. Slack: until the line is taut again.
-  double phase_end(double t0, double z0, double v0, bool taut) const {
-    if (taut) return next_root([&](double s) { return -(a_tip(s) + g); }, t0, t0 + 10.0);
-    return next_root([&](double s) { return z_tip(s) - (z0 + v0 * (s - t0) - 0.5 * g * (s - t0) * (s - t0)) - length_; },
-                     t0 + 1e-9, t0 + 10.0);
-  }
-  template <typename F>
-  static double next_root(const F& f, double from, double to) {
-    for (double a = from; a < to; a += 1e-3) {
-      const double b = std::min(a + 1e-3, to);
-      if (f(b) > 0) {
-        double lo = a, hi = b;
-        while (hi - lo > 1e-13) (f(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-        return hi;
-      }
-    }
-    return to;
-  }
-  samples::HeavingTip tip_;
-  double length_;
-};
-
 TEST(ContactStepper, HoistLineGoesSlackAndSnapsTautAsTheClosedForm) {
   // A 2 t load on a 10 m line from a tip heaving 1 m at 4 rad/s (16 m/s^2 peak, beyond
   // g): the line goes slack every cycle and snaps taut. Against the piecewise closed form,
@@ -422,7 +359,7 @@ TEST(ContactStepper, HoistLineGoesSlackAndSnapsTautAsTheClosedForm) {
     SteppedScene run(samples::load_on_heaving_line(tip, length, mass, 0.0), h, 0);
     const Model& model = *run.scene.model;
     const int load_q = model.joints[model.joint_index("load_heave")].q_index;
-    HoistLineReference reference(tip, length);
+    testing::HeavingSupportReference reference(tip, -length);
     std::vector<double> times, heights, tensions;
     double impulse_total = 0.0;
     std::vector<double> totals;
@@ -436,16 +373,16 @@ TEST(ContactStepper, HoistLineGoesSlackAndSnapsTautAsTheClosedForm) {
       totals.push_back(impulse_total);
       EXPECT_GE(run.stepper.line_impulse(0), 0.0);
       // Never longer than the line (to first order in h).
-      ASSERT_LT(reference.z_tip(run.t) - run.q[load_q], length + 1e-6) << t_start;
+      ASSERT_LT(reference.z_support(run.t) - run.q[load_q], length + 1e-6) << t_start;
     }
     const std::vector<double> expected = reference.load_height(times);
-    ASSERT_GE(reference.snaps.size(), 2u);  // slack and taut again, at least twice
+    ASSERT_GE(reference.contacts.size(), 2u);  // slack and taut again, at least twice
     for (size_t k = 0; k < times.size(); ++k) error_at[refinement] = std::max(error_at[refinement], std::abs(heights[k] - expected[k]));
     // Taut away from the transitions: the line carries m (g + a_tip) (first order in h).
     // Slack: nothing.
     for (size_t k = 0; k < times.size(); ++k) {
       bool near_transition = false, slack = false;
-      for (const auto& [from, to] : reference.phases) {
+      for (const auto& [from, to] : reference.free_phases) {
         near_transition |= std::abs(times[k] - from) < 4 * h || std::abs(times[k] - to) < 4 * h;
         slack |= times[k] > from && times[k] < to;
       }
@@ -453,10 +390,10 @@ TEST(ContactStepper, HoistLineGoesSlackAndSnapsTautAsTheClosedForm) {
       if (slack)
         EXPECT_EQ(tensions[k], 0.0) << "t = " << times[k];
       else
-        EXPECT_NEAR(tensions[k], mass * (g + reference.a_tip(times[k])), 2e-3 * mass * g) << "t = " << times[k];
+        EXPECT_NEAR(tensions[k], mass * (g + reference.a_support(times[k])), 2e-3 * mass * g) << "t = " << times[k];
     }
     // Each snap's impulse, m times the jump in the load's speed, within the steps around it.
-    for (const auto& [when, jump] : reference.snaps) {
+    for (const auto& [when, jump] : reference.contacts) {
       if (when > seconds - 0.1) continue;
       const auto at = [&](double t) {
         return totals[std::min(times.size() - 1, static_cast<size_t>(std::max(0.0, std::round(t / h) - 1)))];
@@ -464,7 +401,7 @@ TEST(ContactStepper, HoistLineGoesSlackAndSnapsTautAsTheClosedForm) {
       const double around = at(when + 20 * h) - at(when - 20 * h);
       // Slack before the snap; after it, taut with its tension for 20 steps (if the tip
       // does not fall away faster than g at once).
-      const double taut_share = std::max(0.0, 20 * h * mass * (g + reference.a_tip(when)));
+      const double taut_share = std::max(0.0, 20 * h * mass * (g + reference.a_support(when)));
       EXPECT_NEAR(around - taut_share, mass * jump, 0.02 * mass * jump) << "snap at t = " << when;
     }
   }
