@@ -179,15 +179,19 @@ def load_sources(r):
     for name in contact_elements(r):
         if f"forces/{name}/force" in r:  # the normal force of the contact (e.g. weight on bit)
             sources.append((f"contact {name}", r.channel(f"forces/{name}/force"), None))
-    # The case's `contacts` (rigid, by impulses): each pair's normal force and each joint
-    # stop's force, from the element "contacts" (docs/case-format.md, "contacts").
+    # The case's `contacts` (rigid, by impulses): each pair's normal force and torsional
+    # moment, each joint stop's force and each line's tension, from the element
+    # "contacts" (docs/case-format.md, "contacts").
     for path in sorted(channel.lstrip("/") for channel in r.channels):
         if not path.startswith("forces/contacts/") or path.endswith("_friction_force"):
             continue
         match = re.fullmatch(r"forces/contacts/(.+)_normal_force", path) or \
-            re.fullmatch(r"forces/contacts/(.+)_force", path)
+            re.fullmatch(r"forces/contacts/(.+)_(?:force|tension)", path)
         if match:
             sources.append((f"contact {match.group(1)}", r.channel(path), None))
+        torsion = re.fullmatch(r"forces/contacts/(.+)_torsion", path)
+        if torsion:
+            sources.append((f"contact {torsion.group(1)}", None, r.channel(path)))
     return sources
 
 

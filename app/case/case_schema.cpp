@@ -175,6 +175,7 @@ constexpr KeySpec contact_pair_keys[] = {
     {"friction_coefficient", "number", "–", "0", "Coulomb mu (≥ 0)"},
     {"restitution", "number", "–", "0", "Newton's e in [0, 1]"},
     {"friction_directions", "number", "–", "2", "tangents per point, 2..16: a friction polygon of 2k faces"},
+    {"torsional_friction", "number", "m", "0", "spin moment <= this x normal force, per point"},
 };
 
 constexpr KeySpec joint_stop_keys[] = {

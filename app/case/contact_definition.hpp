@@ -24,6 +24,7 @@ struct ContactPairDefinition {
   double friction_coefficient = 0.0;
   double restitution = 0.0;
   int friction_directions = 2;  ///< tangents per point: a friction polygon of 2k faces
+  double torsional_friction = 0.0;  ///< m: |spin moment| <= this x normal force, per point
 };
 
 struct JointStopDefinition {

@@ -70,6 +70,7 @@ void read_contacts(const NodeReader& section, CaseDefinition& definition) {
       pair.name = unique_name(item, pair_set, pair.geometry_a + "_on_" + pair.geometry_b);
       pair.friction_coefficient = item.number_or("friction_coefficient", 0.0);
       pair.restitution = item.number_or("restitution", 0.0);
+      if (auto torsion = item.optional("torsional_friction")) pair.torsional_friction = torsion->number_in(length_range);
       if (auto directions = item.optional("friction_directions"))
         pair.friction_directions = static_cast<int>(std::clamp(directions->integer(), -1L, 1000L));  // the kernel checks 2..16
       contacts.pairs.push_back(pair);

@@ -28,7 +28,8 @@ void build_contacts(const CaseDefinition& definition, MultibodySystem& system) {
   }
   for (const ContactPairDefinition& pair : contacts.pairs)
     resolved.pairs.push_back({pair.name, geometry_index(pair.geometry_a), geometry_index(pair.geometry_b),
-                              pair.friction_coefficient, pair.restitution, pair.friction_directions});
+                              pair.friction_coefficient, pair.restitution, pair.friction_directions,
+                              pair.torsional_friction});
   for (const JointStopDefinition& stop : contacts.joint_stops)
     resolved.joint_stops.push_back({stop.name, model.joint_index(stop.joint), stop.lower, stop.upper, stop.restitution});
   for (const TensionLineDefinition& line : contacts.lines) {

@@ -154,9 +154,12 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       direction_w.noalias() += ws.clamped_columns.topLeftCorner(n, c) * v;
       for (int k = 0; k < c; ++k) ws.direction_z[ws.clamped[k]] = v[k];
       const double dw_i = ws.direction_w[i];
-      if (!(s * dw_i > options.pivot_tolerance * std::abs(M(i, i)))) return singular(i);
+      // w_i that does not move with z_i (row i depends on the clamped rows: a friction
+      // row along a coordinate a driver holds) cannot be driven to zero; a boxed row then
+      // goes to its bound (or until another set changes), a free row is singular.
+      const bool w_stays = !(s * dw_i > options.pivot_tolerance * std::abs(M(i, i)));
       // The longest step before a set changes.
-      double step = -w_i / dw_i;
+      double step = w_stays ? infinity : -w_i / dw_i;
       int limiting = i;
       bool limit_is_bound = false;
       const double own_room = s > 0.0 ? ws.upper[i] - z[i] : z[i] - ws.lower[i];
@@ -174,6 +177,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
           if (room < step) step = room, limiting = j, limit_is_bound = false;
         }
       }
+      if (!std::isfinite(step)) return singular(i);
       step = std::max(step, 0.0);
       z[i] += s * step;
       for (int k = 0; k < c; ++k) z[ws.clamped[k]] += step * ws.direction_z[ws.clamped[k]];

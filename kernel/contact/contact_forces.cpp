@@ -9,13 +9,20 @@ ContactForces::ContactForces(std::string name, const Model& model, ContactModel 
       joint_force_(VectorX::Zero(model.nv)) {
   check_contact_model(model, contacts_);
   for (const ContactPair& pair : contacts_.pairs) {
+    pair_channel_.push_back(static_cast<int>(channels_.size()));
     channels_.push_back({pair.name + "_normal_force", "N",
                          "sum of the normal forces of pair '" + pair.name +
                              "' on its first geometry, the last step's impulse / step (>= 0)"});
     channels_.push_back({pair.name + "_friction_force", "N",
                          "magnitude of the summed friction forces of pair '" + pair.name + "' (world)"});
     channels_.push_back({pair.name + "_points", "1", "contact points of pair '" + pair.name + "' in the last step"});
+    if (pair.torsional_friction > 0.0)
+      channels_.push_back({pair.name + "_torsion", "N m",
+                           "moment of the torsional friction of pair '" + pair.name +
+                               "' on its first geometry about the contact normal (the torque on a bit; > 0 "
+                               "counterclockwise seen from the normal's tip)"});
   }
+  first_stop_channel_ = static_cast<int>(channels_.size());
   for (const JointStop& stop : contacts_.joint_stops) {
     const Joint& joint = model.joints[stop.joint];
     stop_velocity_index_.push_back(joint.v_index);
@@ -60,7 +67,7 @@ void ContactForces::outputs(double, const Model&, const Data& data, Eigen::Ref<c
                             std::span<double> values) const {
   for (std::size_t c = 0; c < values.size(); ++c) values[c] = channel_values_[c];
   // Event-located stops: the force is the multiplier of the active row (zero inactive).
-  const std::size_t first_stop = 3 * contacts_.pairs.size();
+  const std::size_t first_stop = first_stop_channel_;
   for (std::size_t s = 0; s < stop_rows_.size(); ++s) {
     double force = 0.0;
     for (const auto& [row, side] : stop_rows_[s]) force += side * data.constraint_active[row] * data.constraint_multipliers[row];
@@ -70,7 +77,7 @@ void ContactForces::outputs(double, const Model&, const Data& data, Eigen::Ref<c
 
 void ContactForces::bind_stop_rows(const Model& model) {
   stop_rows_.assign(contacts_.joint_stops.size(), {});
-  const std::size_t first_stop = 3 * contacts_.pairs.size();
+  const std::size_t first_stop = first_stop_channel_;
   for (std::size_t s = 0; s < contacts_.joint_stops.size(); ++s) {
     const JointStop& stop = contacts_.joint_stops[s];
     channels_[first_stop + s].description = "generalized force of stop '" + stop.name + "' on joint '" +
@@ -114,13 +121,21 @@ void ContactForces::set_from(const ContactStepper& stepper, double h) {
     link_force_world_[c.link_a] += on_a;
     link_force_world_[c.link_b] -= on_a;
     const double normal = force.dot(c.normal_world);
-    channel_values_[3 * c.pair] += normal;
+    const int first = pair_channel_[c.pair];
+    channel_values_[first] += normal;
     friction_sum_[c.pair] += force - normal * c.normal_world;
-    channel_values_[3 * c.pair + 2] += 1.0;
+    channel_values_[first + 2] += 1.0;
+    if (contacts_.pairs[c.pair].torsional_friction > 0.0) {
+      // A couple about the normal: the same on a as its opposite on b, wherever they are.
+      const double torsion = stepper.contact_spin_impulse(k) / h;
+      link_force_world_[c.link_a] += Force(torsion * c.normal_world, Vector3::Zero());
+      link_force_world_[c.link_b] -= Force(torsion * c.normal_world, Vector3::Zero());
+      channel_values_[first + 3] += torsion;
+    }
   }
   link_force_world_[0] = Force::Zero();  // the ground takes what it takes
-  for (std::size_t p = 0; p < friction_sum_.size(); ++p) channel_values_[3 * p + 1] = friction_sum_[p].norm();
-  const int first_stop = 3 * static_cast<int>(contacts_.pairs.size());
+  for (std::size_t p = 0; p < friction_sum_.size(); ++p) channel_values_[pair_channel_[p] + 1] = friction_sum_[p].norm();
+  const int first_stop = first_stop_channel_;
   for (std::size_t s = 0; s < stop_velocity_index_.size(); ++s) {
     const double force = stepper.stop_direction(static_cast<int>(s)) * stepper.stop_impulse(static_cast<int>(s)) / h;
     joint_force_[stop_velocity_index_[s]] += force;
@@ -140,7 +155,7 @@ void ContactForces::set_from(const ContactStepper& stepper, double h) {
     impulse_totals_[contacts_.pairs.size() + stops + l] += tension * h;
   }
   link_force_world_[0] = Force::Zero();
-  for (std::size_t p = 0; p < contacts_.pairs.size(); ++p) impulse_totals_[p] += channel_values_[3 * p] * h;
+  for (std::size_t p = 0; p < contacts_.pairs.size(); ++p) impulse_totals_[p] += channel_values_[pair_channel_[p]] * h;
   for (std::size_t k = 0; k < impulse_channel_.size(); ++k) channel_values_[impulse_channel_[k]] = impulse_totals_[k];
 }
 

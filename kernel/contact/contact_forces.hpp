@@ -1,6 +1,7 @@
 #pragma once
 // The contact forces of the last contact step as a force element: what the recorder
-// writes (per pair its normal and friction force and point count, per stop its force)
+// writes (per pair its normal and friction force, point count and torsional moment, per
+// stop its force, per line its tension)
 // and what an evaluation of the system at an output time applies, so that joint
 // accelerations and reactions there include the contact loads (the step's impulses
 // divided by its length: the mean force over the step). The contact-stepping integrator
@@ -51,6 +52,8 @@ class ContactForces : public ForceElement {
   std::vector<Vector3> friction_sum_;       ///< per pair, world [N]
   VectorX impulse_totals_;                  ///< per pair its normal impulse, per stop its impulse, since the start [N s]
   std::vector<int> impulse_channel_;        ///< the channel of each running total
+  std::vector<int> pair_channel_;           ///< per pair: its first channel (normal, friction, points[, torsion])
+  int first_stop_channel_ = 0;              ///< the first stop's force channel (lines' tensions follow the stops)
   /// Per stop, its constraint rows and their sides (bind_stop_rows; empty: stepped stops).
   std::vector<std::vector<std::pair<int, double>>> stop_rows_;
 };

@@ -90,6 +90,9 @@ void check_contact_model(const Model& model, const ContactModel& contacts) {
                            "a finite number >= 0");
     if (!(pair.restitution >= 0.0 && pair.restitution <= 1.0))
       throw ParameterError(field + ".restitution", number(pair.restitution) + named, "0 <= e <= 1");
+    if (!(std::isfinite(pair.torsional_friction) && pair.torsional_friction >= 0.0))
+      throw ParameterError(field + ".torsional_friction", number(pair.torsional_friction) + named,
+                           "a finite length >= 0 m");
     if (pair.friction_directions < 2 || pair.friction_directions > ContactPair::max_friction_directions)
       throw ParameterError(field + ".friction_directions", std::to_string(pair.friction_directions) + named,
                            "2.." + std::to_string(ContactPair::max_friction_directions) +

@@ -46,6 +46,10 @@ struct ContactPair {
   double restitution = 0.0;
   int friction_directions = 2;
   static constexpr int max_friction_directions = 16;
+  /// m: friction against spinning about the normal at each point, |tau_n| <= mu_t z_n
+  /// (MuJoCo's torsional friction, condim 4): the moment of a contact patch that a point
+  /// contact lacks. A drill bit's face: mu_b D / 3 (Pessier & Fear 1992). 0: none.
+  double torsional_friction = 0.0;
 };
 
 /// A one-sided stop on the coordinate of a 1-DoF joint (revolute or prismatic): the
@@ -89,7 +93,7 @@ struct ContactModel {
 /// "pairs[0].friction_coefficient"; found: the value and the names involved) if the
 /// contact model cannot be used with `model`: a geometry on a link that does not exist
 /// or with a size <= 0, a pair of shapes without a contact routine (two planes), mu < 0,
-/// e outside [0, 1], friction directions outside 2..16, a stop on a joint that is not
+/// e outside [0, 1], friction directions outside 2..16, a torsional friction < 0, a stop on a joint that is not
 /// 1-DoF or with lower >= upper, a line between points of one link or of length <= 0.
 struct Model;
 void check_contact_model(const Model& model, const ContactModel& contacts);

@@ -1,6 +1,8 @@
 #include "kernel/contact/contact_stepper.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <limits>
 
@@ -34,7 +36,8 @@ ContactStepper::ContactStepper(const Model& model, ContactModel contacts, int ma
   const int lines = static_cast<int>(contacts_.lines.size());
   int rows_per_point = 1;
   for (const ContactPair& pair : contacts_.pairs)
-    if (pair.friction_coefficient > 0.0) rows_per_point = std::max(rows_per_point, 1 + pair.friction_directions);
+    rows_per_point = std::max(rows_per_point, 1 + (pair.friction_coefficient > 0.0 ? pair.friction_directions : 0) +
+                                                  (pair.torsional_friction > 0.0 ? 1 : 0));
   capacity_rows_ = model.num_constraint_rows + rows_per_point * max_contacts + stops + lines;
   const int nv = model.nv;
   points_.resize(max_contacts);
@@ -42,6 +45,7 @@ ContactStepper::ContactStepper(const Model& model, ContactModel contacts, int ma
     if (std::holds_alternative<FreeJoint>(model.joints[j].type)) free_joints_.push_back(j);
   contact_first_row_.resize(max_contacts);
   friction_rows_.resize(max_contacts);
+  spin_rows_.resize(max_contacts);
   stop_row_.assign(stops, -1);
   stop_sign_.assign(stops, 0.0);
   line_row_.assign(lines, -1);
@@ -119,6 +123,7 @@ void ContactStepper::classify_friction(const Data& data) {
   for (int k = 0; k < contact_count_; ++k) {
     ContactPoint& c = points_[k];
     const ContactPair& pair = contacts_.pairs[c.pair];
+    spin_rows_[k] = pair.torsional_friction > 0.0 ? 1 : 0;
     friction_rows_[k] = pair.friction_coefficient > 0.0 ? pair.friction_directions : 0;
     if (friction_rows_[k] == 0) continue;
     const Vector3 relative = point_velocity(c.link_a, c.point_world) - point_velocity(c.link_b, c.point_world);
@@ -128,6 +133,14 @@ void ContactStepper::classify_friction(const Data& data) {
     c.tangent1_world = slip / speed;
     c.tangent2_world = c.normal_world.cross(c.tangent1_world);
     friction_rows_[k] = 1;
+  }
+}
+
+void ContactStepper::add_spin_row(int row, int link, const Vector3& axis, double sign, const Data& data) {
+  for (int i = link; i > 0; i = model_.joints[i].parent) {
+    const Joint& joint = model_.joints[i];
+    for (int c = joint.v_index; c < joint.v_index + joint.nv; ++c)
+      jacobian_(row, c) += sign * axis.dot(data.motion_subspace_world.col(c).head<3>());
   }
 }
 
@@ -194,7 +207,7 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
   classify_friction(data);
   const int bilateral = model_.num_constraint_rows;
   int rows = bilateral;
-  for (int k = 0; k < found; ++k) rows += 1 + friction_rows_[k];
+  for (int k = 0; k < found; ++k) rows += 1 + friction_rows_[k] + spin_rows_[k];
   int stop_rows = 0;
   for (size_t s = 0; s < contacts_.joint_stops.size(); ++s) {
     const JointStop& stop = contacts_.joint_stops[s];
@@ -267,6 +280,16 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
       mu[row + d] = box;
     }
     row += directions;
+    if (spin_rows_[k]) {
+      // Torsional friction: the relative spin about the normal, boxed by mu_t z_n (N m s).
+      add_spin_row(row, c.link_a, c.normal_world, 1.0, data);
+      add_spin_row(row, c.link_b, c.normal_world, -1.0, data);
+      row_links_[row] = {c.link_a, c.link_b};
+      offset_[row] = 0.0;
+      normal_of[row] = contact_first_row_[k];
+      mu[row] = pair.torsional_friction;
+      ++row;
+    }
   }
   for (size_t s = 0; s < contacts_.joint_stops.size(); ++s) {
     if (stop_row_[s] < 0) continue;
@@ -354,6 +377,16 @@ ContactStepReport ContactStepper::solve_and_advance(ContactStepReport report, do
     for (int solve = 0; solve < (same_rows || eps == 0.0 ? 1 : 2); ++solve) {
       lcp_offset.noalias() -= eps * centre;
       report.solve = solve_complementarity(problem, workspace_, z, options_.solvers);
+      if (!report.solve.solved() && std::getenv("HEAVESIM_DUMP_LCP")) {
+        FILE* f = std::fopen("/tmp/lcp_dump.txt", "w");
+        std::fprintf(f, "%d\n", rows);
+        for (int i = 0; i < rows; ++i) {
+          for (int j = 0; j < rows; ++j) std::fprintf(f, "%.17g ", A(i, j));
+          std::fprintf(f, "\n");
+        }
+        for (int i = 0; i < rows; ++i) std::fprintf(f, "%.17g %.17g %.17g %d %.17g\n", lcp_offset[i], lower_[i], upper_[i], normal_of[i], mu[i]);
+        std::fclose(f);
+      }
       if (!report.solve.solved() && problem.has_friction()) {
         z = centre;
         report.solve = solve_with_fixed_friction_bounds(problem, z, report.solve);
@@ -444,6 +477,10 @@ Vector3 ContactStepper::contact_impulse_world(int k) const {
   Vector3 impulse = impulses_[row] * c.normal_world;
   for (int d = 0; d < friction_rows_[k]; ++d) impulse += impulses_[row + 1 + d] * friction_direction(c, d, friction_rows_[k]);
   return impulse;
+}
+
+double ContactStepper::contact_spin_impulse(int k) const {
+  return spin_rows_[k] ? impulses_[contact_first_row_[k] + 1 + friction_rows_[k]] : 0.0;
 }
 
 double ContactStepper::stop_impulse(int s) const { return stop_row_[s] < 0 ? 0.0 : impulses_[stop_row_[s]]; }

@@ -82,6 +82,9 @@ class ContactStepper {
   /// its pair's geometry a (b received the opposite).
   std::span<const ContactPoint> contacts() const { return {points_.data(), static_cast<size_t>(contact_count_)}; }
   Vector3 contact_impulse_world(int k) const;
+  /// The torsional friction's angular impulse of point k [N m s] about its normal, on the
+  /// pair's geometry a (b received the opposite); 0 without torsional friction.
+  double contact_spin_impulse(int k) const;
   /// The impulse of joint stop s in the last step [N s or N m s], > 0 away from the bound
   /// reached (0 if the stop was not touched).
   double stop_impulse(int s) const;
@@ -105,6 +108,8 @@ class ContactStepper {
 
  private:
   void add_point_row(int row, int link, const Vector3& point, const Vector3& direction, double sign, const Data& data);
+  /// Row `row` of J gains sign * axis . omega_link: the link's rotation rate about `axis`.
+  void add_spin_row(int row, int link, const Vector3& axis, double sign, const Data& data);
   /// The rows of `report` built: A = J M^-1 J^T, the solve, v+ and q+ (step's second half).
   ContactStepReport solve_and_advance(ContactStepReport report, double h, VectorX& q, VectorX& v);
   /// Per point its friction rows: 0 without friction, 1 along its slip if it slips (its
@@ -127,6 +132,7 @@ class ContactStepper {
   int contact_count_ = 0;
   std::vector<int> contact_first_row_;  ///< per point: its normal row (its friction rows follow)
   std::vector<int> friction_rows_;      ///< per point: friction rows (classify_friction)
+  std::vector<int> spin_rows_;          ///< per point: 1 with torsional friction, else 0
   std::vector<int> stop_row_;           ///< per stop: its row, -1 if not in the problem
   std::vector<double> stop_sign_;       ///< per stop: +1 lower bound reached, -1 upper
   std::vector<int> line_row_;           ///< per line: its row, -1 if slack beyond the margin

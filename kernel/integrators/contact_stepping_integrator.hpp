@@ -28,6 +28,8 @@ class ContactSteppingIntegrator : public Integrator {
   ContactStepper stepper_;
   AppliedForces forces_;
   double t_ = 0.0;
+  double grid_start_ = 0.0;  // s: steps of h are counted from here
+  long grid_steps_ = 0;
   VectorX y_, q_, v_, zdot_;
   IntegratorStatistics statistics_;
 };

@@ -5,7 +5,11 @@
 // for the share of the time the piecewise closed form gives (82.7 % over two periods:
 // the kernel test ContactStepper.BoxOnASurgingHeavingDeckSticksAndSlipsAsTheClosedForm
 // computes it). The demo case runs to the end; a driver that pushes a box into a fixed
-// ceiling ends the run with exit 3 naming the step and the contacts.
+// ceiling ends the run with exit 3 naming the step and the contacts. The rig drilling
+// on bottom with a turning string: the torque on bit is its torsional friction times
+// the weight on bit, and the top drive supplies it. A subsea lift from a heaving crane:
+// the wire goes slack and snaps taut, never longer than itself. The rig's end stops
+// under IDA against contact stepping and penalty stops.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -64,6 +68,64 @@ TEST(ContactRun, ADriverPushingABoxIntoTheCeilingStopsWithExit3NamingTheContacts
   const std::vector<double> time = file.read("/time");
   ASSERT_FALSE(time.empty());
   EXPECT_NEAR(time.back(), 0.4, 0.011);  // the last whole output before the failure
+}
+
+TEST(ContactRun, TheBitsTorqueIsItsTorsionalFrictionOfTheWeightOnBitAndTheTopDriveSuppliesIt) {
+  // cases/contact/bit_on_bottom.yaml: WOB0 = 150 kN at rest, mu_t = mu_b D / 3 = 0.25 x
+  // 0.2159 / 3 m. The bit slides in spin at every step (120 rpm), so its torsional
+  // friction is mu_t times the step's normal force exactly; once the spin-up (time
+  // constant 2 s) has died away (e^-20 by 40 s) the top drive's torque is that moment.
+  const std::string output = temporary("bit_on_bottom.h5");
+  const testing::CommandResult run = testing::run_case(
+      "cases/contact/bit_on_bottom.yaml", output, " --set solver.t_end=60 --set output.evaluate_after=30");
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const H5File file(output);
+  const std::vector<double> time = file.read("/time"), wob = file.read("/forces/contacts/bit_normal_force");
+  const std::vector<double> tob = file.read("/forces/contacts/bit_torsion"), drive = file.read("/drivers/rotary/torque");
+  const double mu_t = 0.25 * 0.2159 / 3;
+  double mean = 0.0, lowest = 1e300, highest = 0.0;
+  int counted = 0;
+  for (std::size_t k = 1; k < time.size(); ++k) {
+    EXPECT_NEAR(tob[k], -mu_t * wob[k], 1e-12 * mu_t * wob[k]) << "t = " << time[k];  // against the spin
+    if (time[k] < 40.0) continue;
+    EXPECT_NEAR(drive[k], -tob[k], 1e-6 * std::abs(tob[k])) << "t = " << time[k];
+    mean += wob[k], ++counted;
+    lowest = std::min(lowest, wob[k]), highest = std::max(highest, wob[k]);
+  }
+  // The passive compensator lets the heave through as WOB: measured 142 .. 157 kN about 150 kN.
+  EXPECT_NEAR(mean / counted, 150e3, 0.01 * 150e3);
+  EXPECT_GT(highest - lowest, 5e3);
+  EXPECT_GT(lowest, 0.0);  // the bit stays on bottom
+}
+
+TEST(ContactRun, ASubseaLiftsWireGoesSlackAndSnapsButNeverStretches) {
+  // cases/contact/subsea_lift.yaml: a 187 kN (submerged) module with 41 t of added mass and
+  // the drag of an 80 m^2 roof on a 45 m wire from a crane tip heaving 1.5 m at 7 s. Where
+  // the tip falls faster than the module can follow, the wire is slack (tension 0: measured
+  // 18 % of the time); it snaps taut again with an impulse (the running total jumps by more
+  // than the tension's integral). The wire never exceeds its length.
+  const std::string output = temporary("subsea_lift.h5");
+  const testing::CommandResult run = testing::run_case("cases/contact/subsea_lift.yaml", output);
+  ASSERT_EQ(run.exit_code, 0) << run.output;
+  const H5File file(output);
+  const std::vector<double> time = file.read("/time"), tension = file.read("/forces/contacts/crane_wire_tension");
+  const std::vector<double> total = file.read("/forces/contacts/crane_wire_impulse");
+  const std::vector<double> tip = file.read("/joints/tip_heave/q"), module = file.read("/joints/module_heave/q");
+  int slack = 0, samples = 0;
+  double largest_snap = 0.0;
+  for (std::size_t k = 1; k < time.size(); ++k) {
+    EXPECT_GE(tension[k], 0.0);
+    EXPECT_LE((20.0 + tip[k]) - module[k], 45.0 + 1e-9) << "t = " << time[k];  // tip at 20 m above the module's zero
+    if (time[k] < 60.0) continue;
+    ++samples;
+    slack += tension[k] == 0.0;
+    const double delivered = total[k] - total[k - 1], steady = 0.5 * (tension[k] + tension[k - 1]) * (time[k] - time[k - 1]);
+    largest_snap = std::max(largest_snap, delivered - steady);
+  }
+  EXPECT_GT(slack, samples / 10);
+  EXPECT_LT(slack, samples / 3);
+  // A snap delivers ~17 kN s in one 1 ms step (measured), far beyond the tension's share.
+  EXPECT_GT(largest_snap, 5e3);
 }
 
 TEST(ContactRun, TheRigsEndStopsUnderIdaMeetContactSteppingAndThePenaltyStops) {

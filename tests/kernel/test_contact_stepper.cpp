@@ -294,6 +294,43 @@ TEST(ContactStepper, SpinningBitDeceleratesAtTheClosedFormRateAtEveryAngle) {
   EXPECT_LT(run.v.tail<3>().norm(), 1e-9);  // no drift of the centre
 }
 
+TEST(ContactStepper, TorsionalFrictionStopsASpinningSphereAndHoldsATorqueBelowIt) {
+  // A sphere on the ground spun about the vertical: one point, so no sliding friction
+  // can resist the spin; the pair's torsional friction mu_t (a length) does, with a moment
+  // mu_t m g, so the spin falls at alpha = mu_t m g / I (I = 2/5 m r^2) and stops at
+  // omega0 / alpha. Then a twisting moment 1 % below mu_t m g is held; 1 % above, it turns.
+  const double radius = 0.1, mass = 50.0, mu_t = 0.02, spin = 6.0, h = 1e-3;
+  samples::ContactScene scene = samples::sphere_on_plane(radius, mass, radius, 0.0, 0.0);
+  scene.contacts.pairs[0].torsional_friction = mu_t;
+  scene.v[2] = spin;
+  SteppedScene run(std::move(scene), h, 2);
+  const double inertia = 0.4 * mass * radius * radius, alpha = mu_t * mass * g / inertia;
+  double worst = 0.0;
+  while (run.t < spin / alpha - 2 * h) {
+    ASSERT_TRUE(run.step().ok()) << "t = " << run.t;
+    worst = std::max(worst, std::abs(run.v[2] - (spin - alpha * run.t)));
+    ASSERT_NEAR(run.stepper.contact_spin_impulse(0) / h, -mu_t * mass * g, 1e-9 * mu_t * mass * g);
+  }
+  EXPECT_LT(worst, 1e-9 * spin);
+  for (int k = 0; k < 5; ++k) ASSERT_TRUE(run.step().ok());
+  EXPECT_LT(std::abs(run.v[2]), 1e-12);
+  for (const double factor : {0.99, 1.01}) {
+    samples::ContactScene twisted = samples::sphere_on_plane(radius, mass, radius, 0.0, 0.0);
+    twisted.contacts.pairs[0].torsional_friction = mu_t;
+    SteppedScene held(std::move(twisted), h, 2);
+    std::vector<Force> twist(held.scene.model->num_links(), Force::Zero());
+    twist[1] = Force(Vector3(0, 0, factor * mu_t * mass * g), Vector3::Zero());
+    for (int k = 0; k < 100; ++k) {
+      ASSERT_TRUE(held.stepper.step(held.data, held.t, h, held.q, held.v, held.tau, twist).ok());
+      held.t += h;
+    }
+    if (factor < 1)
+      EXPECT_LT(std::abs(held.v[2]), 1e-12);
+    else
+      EXPECT_NEAR(held.v[2], 0.01 * mu_t * mass * g / inertia * held.t, 1e-9);
+  }
+}
+
 TEST(ContactStepper, FrictionPolygonHoldsUpToItsSupportInEveryDirection) {
   // A flat box pushed along the floor by a horizontal force at angle phi from the floor's
   // x axis (the tangent1 of its corners): it sticks while the force lies in the friction

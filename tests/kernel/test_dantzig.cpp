@@ -118,15 +118,56 @@ TEST(Dantzig, ScalesTheFrictionBoxByTheNormalImpulse) {
 // row 1 with row 0 clamped changes w_1 at the rate of the Schur complement 1 - 1 = 0:
 // the "s <= 0" of ODE and Bullet, here a status. (With equal gaps, q = (-1, -1), row 1
 // is already complementary at z_1 = 0 and the solve succeeds.)
-TEST(Dantzig, ReportsASingularPivotOnDuplicateContacts) {
+// Two contact rows along one direction with different gaps: M = [1 1; 1 1] is singular.
+// Once row 1 is clamped, row 2's w no longer moves with z_2: z_2 grows while z_1 gives
+// way, until row 1 leaves at 0; then z_2 alone closes its w. The answer is unique:
+// w_2 = z_1 + z_2 - 2 >= 0 forces w_1 = w_2 + 1 > 0, so z_1 = 0 and z_2 = 2 (what Lemke
+// finds on the same problem).
+TEST(Dantzig, LetsADependentRowTakeOverFromTheClampedOne) {
   MatrixX M(2, 2);
   M << 1, 1, 1, 1;
   const VectorX q = Eigen::Vector2d(-1, -2);
   DantzigWorkspace workspace(2);
   VectorX z(2);
   const ComplementarityResult result = dantzig({M, q}, workspace, z);
+  ASSERT_TRUE(result.solved()) << result.message;
+  EXPECT_LE((z - Eigen::Vector2d(0, 2)).lpNorm<Eigen::Infinity>(), 1e-15);
+  EXPECT_EQ(result.pivots, 3);
+}
+
+// A row whose w cannot move and whose box is open in the direction it must go: no step
+// ends. M = [0 1; 1 0] has no solution Dantzig's pivots reach (nor Lemke's: it is not
+// copositive-plus); the failure names the row.
+TEST(Dantzig, ReportsASingularPivotWhereNoStepEnds) {
+  MatrixX M(2, 2);
+  M << 0, 1, 1, 0;
+  const VectorX q = Eigen::Vector2d(-1, -1);
+  DantzigWorkspace workspace(2);
+  VectorX z(2);
+  const ComplementarityResult result = dantzig({M, q}, workspace, z);
   EXPECT_EQ(result.status, ComplementarityStatus::singular_pivot);
-  EXPECT_NE(result.message.find("pivot of row 1"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("pivot of row 0"), std::string::npos) << result.message;
+}
+
+// A friction row along a coordinate that a free row (a driver) holds: its w is the
+// driven speed whatever its impulse, so it goes to its bound, and the free row takes the
+// rest (a bit on the formation turned by the top drive: the drive supplies mu_t z_n).
+TEST(Dantzig, SendsAFrictionRowThatTheDriverHoldsToItsBound) {
+  // Rows: 0 the driver (free), 1 the normal, 2 the torsional friction of row 1 (mu 0.5).
+  MatrixX M(3, 3);
+  M << 2, 0, 2, 0, 1, 0, 2, 0, 2;
+  const VectorX q = Eigen::Vector3d(-4, -3, 1);  // the normal needs 3; the spin is 1 without impulses
+  const Eigen::Vector3d lower(-std::numeric_limits<double>::infinity(), 0, 0);
+  const Eigen::Vector3d upper = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::VectorXi normal(3);
+  normal << -1, -1, 1;
+  const Eigen::Vector3d mu(0, 0, 0.5);
+  DantzigWorkspace workspace(3);
+  VectorX z(3);
+  const ComplementarityResult result = dantzig({M, q, lower, upper, normal, mu}, workspace, z);
+  ASSERT_TRUE(result.solved()) << result.message;
+  // z_n = 3; the friction at -mu z_n = -1.5; the driver: w_0 = 2 z_0 + 2 z_2 - 4 = 0.
+  EXPECT_LE((z - Eigen::Vector3d(3.5, 3, -1.5)).lpNorm<Eigen::Infinity>(), 1e-14);
 }
 
 TEST(Dantzig, RefusesANonSymmetricMatrix) {
