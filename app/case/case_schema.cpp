@@ -23,7 +23,7 @@ constexpr KeySpec root_keys[] = {
     {"constraints", "list", "–", "none", "distance, coupler and expression constraints"},
     {"drivers", "list", "–", "none", "prescribed motion of joint coordinates, body points, distances, angles"},
     {"forces", "list", "–", "none", "force elements"},
-    {"contacts", "map", "–", "none", "contact shapes, pairs and joint stops (integrator `contact`)"},
+    {"contacts", "map", "–", "none", "contact shapes, pairs, joint stops and lines (integrator `contact`; stops alone: `ida`)"},
     {"solver", "map", "–", "required", "integration settings"},
     {"output", "map", "–", "everything", "what to record and how often"},
     {"kinematics", "map", "–", "see below", "settings of `heavesim kinematics`"},
