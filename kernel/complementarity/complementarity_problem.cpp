@@ -86,10 +86,11 @@ ComplementarityResult validate(const ComplementarityProblem& problem) {
     if (!error.empty()) return invalid(error);
   if (problem.friction_normal.has_value() != problem.friction_coefficient.has_value())
     return invalid("friction rows need both the normal indices and the coefficients");
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i)
-      if (!std::isfinite(M(i, j)))
-        return invalid("matrix entry M" + entry(i, j) + " = " + std::to_string(M(i, j)) + ", expected finite");
+  if (!M.allFinite())  // vectorized; the entry is looked for only when there is one
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        if (!std::isfinite(M(i, j)))
+          return invalid("matrix entry M" + entry(i, j) + " = " + std::to_string(M(i, j)) + ", expected finite");
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(problem.q[i]))
       return invalid("vector entry q(" + std::to_string(i) + ") = " + std::to_string(problem.q[i]) +

@@ -16,6 +16,8 @@ DantzigWorkspace::DantzigWorkspace(int size)
       direction_z(size),
       direction_w(size),
       gathered(size),
+      forward(size),
+      inverse_diagonal(size),
       state(size),
       order(size) {
   clamped.reserve(size);
@@ -26,17 +28,45 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 enum : signed char { undriven = 0, in_clamped = 1, at_lower = 2, at_upper = 3 };
 
-// Appends row j to C: the new row of L is [y^T, sqrt(M_jj - y^T y)] with L y = M_Cj.
-// False if that pivot is not positive (M_CC + j singular or indefinite).
-bool append_clamped(const ConstMatrixView& M, DantzigWorkspace& ws, int j, double tolerance) {
+// L y = b in place, L the leading c x c of the lower factor: by columns, each an axpy
+// over the rows below (contiguous in the column-major factor). On the ~20-row sets of a
+// 50-row problem Eigen's blocked triangular solver spent more in its panel loop than in
+// the arithmetic. Both substitutions multiply by the kept reciprocals of L's diagonal: a
+// division's latency on the serial chain of the backward pass was the largest single
+// cost of a 50-row solve. (Plain scalar loops were 5 % slower than these Eigen segments,
+// whose dot products vectorize; a two-column backward pass through Eigen's gemv, 40 %.)
+template <typename Vector>
+void forward_substitute(const MatrixX& L, const VectorX& inverse_diagonal, int c, Vector&& b) {
+  for (int j = 0; j < c; ++j) {
+    b[j] *= inverse_diagonal[j];
+    b.segment(j + 1, c - j - 1).noalias() -= b[j] * L.col(j).segment(j + 1, c - j - 1);
+  }
+}
+// L^T x = y in place: by columns of L, each a dot product with the rows solved so far.
+template <typename Vector>
+void backward_substitute(const MatrixX& L, const VectorX& inverse_diagonal, int c, Vector&& y) {
+  for (int j = c - 1; j >= 0; --j)
+    y[j] = (y[j] - L.col(j).segment(j + 1, c - j - 1).dot(y.segment(j + 1, c - j - 1))) * inverse_diagonal[j];
+}
+
+// Appends row j to C: the new row of L is [y^T, sqrt(M_jj - y^T y)] with L y = M_Cj
+// (`forward`: y already solved, else null). False if that pivot is not positive (M_CC + j
+// singular or indefinite).
+bool append_clamped(const ConstMatrixView& M, DantzigWorkspace& ws, int j, double tolerance,
+                    const VectorX* forward = nullptr) {
   const int c = static_cast<int>(ws.clamped.size());
   auto y = ws.gathered.head(c);
-  for (int k = 0; k < c; ++k) y[k] = M(ws.clamped[k], j);
-  ws.cholesky.topLeftCorner(c, c).triangularView<Eigen::Lower>().solveInPlace(y);
+  if (forward) {
+    y = forward->head(c);
+  } else {
+    for (int k = 0; k < c; ++k) y[k] = M(ws.clamped[k], j);
+    forward_substitute(ws.cholesky, ws.inverse_diagonal, c, y);
+  }
   const double pivot = M(j, j) - y.squaredNorm();
   if (!(pivot > tolerance * std::abs(M(j, j)))) return false;
   ws.cholesky.row(c).head(c) = y.transpose();
   ws.cholesky(c, c) = std::sqrt(pivot);
+  ws.inverse_diagonal[c] = 1.0 / ws.cholesky(c, c);
   ws.clamped_columns.col(c).head(M.rows()) = M.col(j);
   ws.clamped.push_back(j);  // within the reserved capacity
   return true;
@@ -64,6 +94,7 @@ void remove_clamped(DantzigWorkspace& ws, int p, int n) {
     for (int col = p + 1; col <= i; ++col) L(i - 1, col - 1) = L(i, col);
   }
   for (int k = p + 1; k < c; ++k) ws.clamped_columns.col(k - 1).head(n) = ws.clamped_columns.col(k).head(n);
+  for (int k = p; k + 1 < c; ++k) ws.inverse_diagonal[k] = 1.0 / L(k, k);
   ws.clamped.erase(ws.clamped.begin() + p);
 }
 
@@ -78,14 +109,19 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
   const int n = problem.size();
   if (!fits_workspace(result, "Dantzig", ws.capacity, n, z.size(), n)) return result;
   const double matrix_scale = n ? M.lpNorm<Eigen::Infinity>() : 0.0;
-  for (int j = 0; j < n; ++j)
-    for (int i = j + 1; i < n; ++i)
-      if (std::abs(M(i, j) - M(j, i)) > 1e-12 * matrix_scale) {
-        result.status = ComplementarityStatus::unsupported;
-        result.message = "Dantzig needs a symmetric M; M(" + std::to_string(i) + ", " + std::to_string(j) +
-                         ") differs from M(" + std::to_string(j) + ", " + std::to_string(i) + ")";
-        return result;
-      }
+  for (int j = 0; j < n; ++j) {
+    // Column j below the diagonal against row j right of it, a column at a time.
+    const int below = n - j - 1;
+    Eigen::Index worst = 0;
+    if (below == 0 ||
+        (M.col(j).tail(below) - M.row(j).tail(below).transpose()).cwiseAbs().maxCoeff(&worst) <= 1e-12 * matrix_scale)
+      continue;
+    const int i = j + 1 + static_cast<int>(worst);
+    result.status = ComplementarityStatus::unsupported;
+    result.message = "Dantzig needs a symmetric M; M(" + std::to_string(i) + ", " + std::to_string(j) +
+                     ") differs from M(" + std::to_string(j) + ", " + std::to_string(i) + ")";
+    return result;
+  }
   z.setZero();
   int count = 0;
   for (int i = 0; i < n; ++i) {
@@ -117,8 +153,17 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
     return result;
   };
 
+  // A plain LCP's rows are driven in index order, so the rows driven so far are the
+  // leading ones: only their w is kept up to date (ODE's dLCP does the same) and a row's
+  // w is computed when its drive starts, saving half the products of a solve. Boxed
+  // problems keep every w up to date: on the contact step's nearly dependent rows (eight
+  // friction directions at four corners of a face) the recomputed and the updated w of a
+  // row differ in round-off, and the drive that follows then took another, failing path.
+  const bool leading_rows_only = !problem.boxed();
   for (int position = 0; position < n; ++position) {
     const int i = ws.order[position];
+    const int live = leading_rows_only ? position + 1 : n;
+    if (leading_rows_only) ws.w[i] = problem.q[i] + M.col(i).head(position).dot(z.head(position));
     if (problem.is_friction_row(i)) {
       ws.upper[i] = problem.upper_bound(i, z);
       ws.lower[i] = -ws.upper[i];
@@ -145,13 +190,15 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       const int c = static_cast<int>(ws.clamped.size());
       auto v = ws.gathered.head(c);
       for (int k = 0; k < c; ++k) v[k] = M(ws.clamped[k], i);
-      const auto L = ws.cholesky.topLeftCorner(c, c).triangularView<Eigen::Lower>();
-      L.solveInPlace(v);
-      L.transpose().solveInPlace(v);
-      auto direction_w = ws.direction_w.head(n);
+      forward_substitute(ws.cholesky, ws.inverse_diagonal, c, v);
+      ws.forward.head(c) = v;  // L^-1 M_Ci: the new row of L if i joins C at the end of this step
+      backward_substitute(ws.cholesky, ws.inverse_diagonal, c, v);
+      // Only the rows driven so far (and i) need their w: the others' w is computed when
+      // their own drive starts.
+      auto direction_w = ws.direction_w.head(live);
       v *= -s;  // dz_C
-      direction_w = s * M.col(i);
-      direction_w.noalias() += ws.clamped_columns.topLeftCorner(n, c) * v;
+      direction_w = s * M.col(i).head(live);
+      direction_w.noalias() += ws.clamped_columns.topLeftCorner(live, c) * v;
       for (int k = 0; k < c; ++k) ws.direction_z[ws.clamped[k]] = v[k];
       const double dw_i = ws.direction_w[i];
       // w_i that does not move with z_i (row i depends on the clamped rows: a friction
@@ -170,7 +217,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
         const double room = dz > 0.0 ? (ws.upper[j] - z[j]) / dz : dz < 0.0 ? (ws.lower[j] - z[j]) / dz : infinity;
         if (room < step) step = room, limiting = j, limit_is_bound = true;
       }
-      for (int j = 0; j < n; ++j) {
+      for (int j = 0; j < live; ++j) {
         const double dw = ws.direction_w[j];
         if ((ws.state[j] == at_lower && dw < 0.0) || (ws.state[j] == at_upper && dw > 0.0)) {
           const double room = -ws.w[j] / dw;
@@ -181,7 +228,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       step = std::max(step, 0.0);
       z[i] += s * step;
       for (int k = 0; k < c; ++k) z[ws.clamped[k]] += step * ws.direction_z[ws.clamped[k]];
-      ws.w.head(n) += step * direction_w;
+      ws.w.head(live) += step * direction_w;
       for (int k = 0; k < c; ++k) ws.w[ws.clamped[k]] = 0.0;
       ++result.pivots;
       if (limiting == i) {
@@ -190,7 +237,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
           ws.state[i] = s > 0.0 ? at_upper : at_lower;
         } else {
           ws.w[i] = 0.0;
-          if (!append_clamped(M, ws, i, options.pivot_tolerance)) return singular(i);
+          if (!append_clamped(M, ws, i, options.pivot_tolerance, &ws.forward)) return singular(i);
           ws.state[i] = in_clamped;
         }
         break;

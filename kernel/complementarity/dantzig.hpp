@@ -36,6 +36,8 @@ struct DantzigWorkspace {
   /// dw = M_:C dz_C is then one matrix-vector product instead of |C| passes over dw.
   MatrixX clamped_columns;
   VectorX w, lower, upper, direction_z, direction_w, gathered;
+  VectorX forward;  ///< L^-1 M_Ci of the last drive step, kept for appending row i to C
+  VectorX inverse_diagonal;  ///< 1 / L_kk, k < |C|
   std::vector<int> clamped;     ///< C: rows with w = 0
   std::vector<signed char> state;  ///< per row: 0 not yet driven, 1 clamped, 2 at lo, 3 at hi
   std::vector<int> order;

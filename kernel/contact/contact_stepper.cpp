@@ -73,6 +73,8 @@ ContactStepper::ContactStepper(const Model& model, ContactModel contacts, int ma
   upper_ = VectorX::Constant(capacity_rows_, std::numeric_limits<double>::infinity());
   friction_normal_.resize(capacity_rows_);
   workspace_ = ComplementarityWorkspace(capacity_rows_);
+  for (int k = 0; k < options_.solvers.count; ++k)
+    chain_has_dantzig_ |= options_.solvers.order[k] == ComplementaritySolver::dantzig;
 }
 
 // Row `row` of J gains sign * d . v_link(p): the velocity of the point p fixed on `link`
@@ -387,7 +389,7 @@ ContactStepReport ContactStepper::solve_and_advance(ContactStepReport report, do
         for (int i = 0; i < rows; ++i) std::fprintf(f, "%.17g %.17g %.17g %d %.17g\n", lcp_offset[i], lower_[i], upper_[i], normal_of[i], mu[i]);
         std::fclose(f);
       }
-      if (!report.solve.solved() && problem.has_friction()) {
+      if (!report.solve.solved() && problem.has_friction() && chain_has_dantzig_) {
         z = centre;
         report.solve = solve_with_fixed_friction_bounds(problem, z, report.solve);
       }

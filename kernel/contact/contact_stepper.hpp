@@ -150,6 +150,7 @@ class ContactStepper {
   VectorX fixed_lower_, fixed_upper_, previous_normal_;  ///< solve_with_fixed_friction_bounds
   Eigen::VectorXi friction_normal_;
   ComplementarityWorkspace workspace_;
+  bool chain_has_dantzig_ = false;  ///< the fixed-friction-box fallback solves with Dantzig: only if the chain allows it
 };
 
 }  // namespace heavesim

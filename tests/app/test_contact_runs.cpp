@@ -56,11 +56,14 @@ TEST(ContactRun, DeckCargoDemoRunsToTheEnd) {
 TEST(ContactRun, ADriverPushingABoxIntoTheCeilingStopsWithExit3NamingTheContacts) {
   // The deck rises at 0.5 m/s under a box a fixed ceiling holds down: from t = 0.4 s the
   // box touches both and no impulses can meet the driver (the problem has no solution).
+  // The regularized problem of the first step there may still pass its residual test
+  // (the overlap it leaves, 8e-5 m, is what eps z allows), so the run stops within a step
+  // or two of 0.4 s.
   const std::string output = temporary("fault_contact_ceiling.h5");
   const testing::CommandResult run =
       testing::run_case("tests/cases/fault_contact_driver_into_ceiling.yaml", output);
   EXPECT_EQ(run.exit_code, 3) << run.output;
-  for (const char* part : {"at t = 0.4 s", "found no impulses", "'box_on_deck' gap", "'box_on_ceiling' gap",
+  for (const char* part : {"at t = 0.4", "found no impulses", "'box_on_deck' gap", "'box_on_ceiling' gap",
                            "1 constraint rows", "Dantzig: ", "residual", "a driver"})
     EXPECT_NE(run.output.find(part), std::string::npos) << "'" << part << "' in: " << run.output;
   const H5File file(output);
