@@ -10,14 +10,25 @@
 
 namespace heavesim::hydro {
 
+WaveTrain::WaveTrain(std::vector<WaveComponent> components, Ramp ramp, double depth)
+    : components_(std::move(components)), ramp_(ramp), depth_(depth) {
+  const Eigen::Index n = static_cast<Eigen::Index>(components_.size());
+  for (Eigen::ArrayXd* a : {&amplitude_, &angular_frequency_, &wave_number_x_, &wave_number_y_, &phase_}) a->resize(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const WaveComponent& c = components_[j];
+    amplitude_[j] = c.amplitude;
+    angular_frequency_[j] = c.angular_frequency;
+    wave_number_x_[j] = c.wave_number * std::cos(c.heading);
+    wave_number_y_[j] = c.wave_number * std::sin(c.heading);
+    phase_[j] = c.phase;
+  }
+}
+
 double WaveTrain::elevation(double t, double x, double y) const {
   const double r = ramp_(t);
   if (r == 0.0) return 0.0;
-  double eta = 0.0;
-  for (const WaveComponent& c : components_)
-    eta += c.amplitude * std::cos(c.angular_frequency * t -
-                                  c.wave_number * (x * std::cos(c.heading) + y * std::sin(c.heading)) + c.phase);
-  return r * eta;
+  // One expression, reduced without a temporary (no allocation).
+  return r * (amplitude_ * (angular_frequency_ * t - wave_number_x_ * x - wave_number_y_ * y + phase_).cos()).sum();
 }
 
 double WaveTrain::variance() const {
