@@ -25,6 +25,18 @@ ContactGeometry ground_plane(const Matrix3& rotation = Matrix3::Identity()) {
   return plane;
 }
 
+/// A driver of `joint`'s coordinate: amplitude sin(omega t + phase), with its exact rates.
+DriverDefinition sine_driver(std::string name, std::string joint, double amplitude, double omega, double phase = 0.0) {
+  DriverDefinition driver;
+  driver.name = std::move(name);
+  driver.joint = std::move(joint);
+  driver.motion = [=](double t) {
+    const double s = std::sin(omega * t + phase), c = std::cos(omega * t + phase);
+    return DriverMotion{amplitude * s, amplitude * omega * c, -amplitude * omega * omega * s};
+  };
+  return driver;
+}
+
 /// Sets body `body`'s free-joint coordinates (position, quaternion) in q.
 void place(const Model& model, VectorX& q, const std::string& body, const Vector3& position,
            const Eigen::Quaterniond& orientation) {
@@ -114,20 +126,8 @@ ContactScene box_on_moving_deck(const MovingDeck& deck, double mu, const Vector3
   builder.add_joint(joint_definition("surge", JointKind::prismatic, "ground", "carriage", Vector3::UnitX()));
   builder.add_joint(joint_definition("heave", JointKind::prismatic, "carriage", "deck", Vector3::UnitZ()));
   builder.add_joint(joint_definition("box_free", JointKind::free, "ground", "box"));
-  const auto sine = [](double amplitude, double omega, double phase) {
-    return [=](double t) {
-      const double s = std::sin(omega * t + phase), c = std::cos(omega * t + phase);
-      return DriverMotion{amplitude * s, amplitude * omega * c, -amplitude * omega * omega * s};
-    };
-  };
-  DriverDefinition surge;
-  surge.name = "surge_motion";
-  surge.joint = "surge";
-  surge.motion = sine(deck.surge_amplitude, deck.omega, 0.0);
-  DriverDefinition heave = surge;
-  heave.name = "heave_motion";
-  heave.joint = "heave";
-  heave.motion = sine(deck.heave_amplitude, deck.omega, deck.phase);
+  const DriverDefinition surge = sine_driver("surge_motion", "surge", deck.surge_amplitude, deck.omega);
+  const DriverDefinition heave = sine_driver("heave_motion", "heave", deck.heave_amplitude, deck.omega, deck.phase);
   builder.add_driver(surge);
   builder.add_driver(heave);
   ContactScene scene;
@@ -176,13 +176,7 @@ ContactScene load_on_heaving_line(const HeavingTip& tip, double length, double m
   builder.add_body({"load", solid_box(mass, Vector3(0.5, 0.5, 0.5)), std::nullopt});
   builder.add_joint(joint_definition("tip_heave", JointKind::prismatic, "ground", "tip", Vector3::UnitZ()));
   builder.add_joint(joint_definition("load_heave", JointKind::prismatic, "ground", "load", Vector3::UnitZ()));
-  DriverDefinition motion;
-  motion.name = "tip_motion";
-  motion.joint = "tip_heave";
-  motion.motion = [a = tip.amplitude, w = tip.omega](double t) {
-    return DriverMotion{a * std::sin(w * t), a * w * std::cos(w * t), -a * w * w * std::sin(w * t)};
-  };
-  builder.add_driver(motion);
+  builder.add_driver(sine_driver("tip_motion", "tip_heave", tip.amplitude, tip.omega));
   ContactScene scene;
   scene.model = std::make_shared<const Model>(builder.build());
   scene.masses = {1e3, mass};
@@ -204,13 +198,7 @@ StopScene load_on_heaving_floor(const HeavingTip& floor, double mass, double res
   builder.add_body({"load", solid_box(mass, Vector3(0.5, 0.5, 0.5)), std::nullopt});
   builder.add_joint(joint_definition("floor_heave", JointKind::prismatic, "ground", "floor", Vector3::UnitZ()));
   builder.add_joint(joint_definition("lift", JointKind::prismatic, "floor", "load", Vector3::UnitZ()));
-  DriverDefinition motion;
-  motion.name = "floor_motion";
-  motion.joint = "floor_heave";
-  motion.motion = [a = floor.amplitude, w = floor.omega](double t) {
-    return DriverMotion{a * std::sin(w * t), a * w * std::cos(w * t), -a * w * w * std::sin(w * t)};
-  };
-  builder.add_driver(motion);
+  builder.add_driver(sine_driver("floor_motion", "floor_heave", floor.amplitude, floor.omega));
   builder.add_joint_stop({"lift.lower", "lift", 0.0, true, restitution});
   StopScene scene;
   scene.model = std::make_shared<const Model>(builder.build());

@@ -6,6 +6,7 @@
 // contact (e = 0) gives it the support's speed. Transitions bisected to 1e-13 s. Used
 // by the contact step's hoist line and the event-located stop of a load on a heaving
 // floor.
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -13,6 +14,21 @@
 #include "samples/contact_scenes.hpp"
 
 namespace heavesim::testing {
+
+/// The first t in (from, to] where f turns positive (scanned at 1 ms, then bisected to
+/// 1e-13 s); `to` if none.
+template <typename F>
+double first_positive(const F& f, double from, double to) {
+  for (double a = from; a < to; a += 1e-3) {
+    const double b = std::min(a + 1e-3, to);
+    if (f(b) > 0) {
+      double lo = a, hi = b;
+      while (hi - lo > 1e-13) (f(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
+      return hi;
+    }
+  }
+  return to;
+}
 
 class HeavingSupportReference {
  public:
@@ -60,21 +76,9 @@ class HeavingSupportReference {
   }
   /// Carried: until the support falls away faster than g. Free: until it is reached again.
   double phase_end(double t0, double z0, double v0, bool carried) const {
-    if (carried) return next_root([&](double s) { return -(a_support(s) + g); }, t0, t0 + 10.0);
-    return next_root([&](double s) { return z_support(s) + offset_ - flight(z0, v0, t0, s); }, t0 + 1e-9, t0 + 10.0);
-  }
-  /// The first t in (from, to] where f turns positive (scanned at 1 ms, then bisected).
-  template <typename F>
-  static double next_root(const F& f, double from, double to) {
-    for (double a = from; a < to; a += 1e-3) {
-      const double b = std::min(a + 1e-3, to);
-      if (f(b) > 0) {
-        double lo = a, hi = b;
-        while (hi - lo > 1e-13) (f(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-        return hi;
-      }
-    }
-    return to;
+    if (carried) return first_positive([&](double s) { return -(a_support(s) + g); }, t0, t0 + 10.0);
+    return first_positive([&](double s) { return z_support(s) + offset_ - flight(z0, v0, t0, s); }, t0 + 1e-9,
+                          t0 + 10.0);
   }
   samples::HeavingTip support_;
   double offset_;

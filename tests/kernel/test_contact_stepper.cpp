@@ -203,19 +203,9 @@ class DeckSlipReference {
   }
   double vx(double t) const { return d_.surge_amplitude * d_.omega * std::cos(d_.omega * t); }
   double vz(double t) const { return d_.heave_amplitude * d_.omega * std::cos(d_.omega * t + d_.phase); }
-  /// The first t in (from, to] where f turns positive (scanned at 1 ms, then bisected);
-  /// `to` if none.
   template <typename F>
   static double next_root(const F& f, double from, double to) {
-    for (double a = from; a < to; a += 1e-3) {
-      const double b = std::min(a + 1e-3, to);
-      if (f(b) > 0) {
-        double lo = a, hi = b;
-        while (hi - lo > 1e-13) (f(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-        return hi;
-      }
-    }
-    return to;
+    return testing::first_positive(f, from, to);
   }
   samples::MovingDeck d_;
   double mu_;
