@@ -2,26 +2,46 @@
 
 namespace heavesim {
 
+// World form of the composite-rigid-body algorithm, one velocity coordinate at a time:
+// with every S and composite inertia in world coordinates about the origin, the force
+// F_c = Ic_i s_c that coordinate c of joint i needs is the same vector for every
+// coordinate k on its path to the root, so M(k, c) = s_k . F_c needs no transform
+// (Featherstone 2008, table 6.2 with the transforms gone). Only the entries on those
+// paths are written; the others are zero from the Data's construction and stay so.
+// The rigid part of Ic adds as InertiaAboutOrigin (13 numbers); a 6x6 added part is
+// carried only through subtrees that have one.
 const MatrixX& mass_matrix(const Model& model, Data& data) {
   const int n = model.num_links();
-  for (int i = 1; i < n; ++i) data.composite_inertia_world[i] = link_inertia_matrix(model, data, i);
+  const std::vector<int>& coordinate_parent = data.velocity_coordinate_parent;
+  const Matrix6X& S = data.motion_subspace_world;
+  MatrixX& M = data.mass_matrix;
+  auto& rigid = data.composite_rigid_inertia_world;
+  auto& added = data.composite_added_inertia_world;
+  auto& has_added = data.composite_has_added_inertia;
+  for (int i = 1; i < n; ++i) {
+    rigid[i].assign(data.rigid_inertia_world[i]);
+    has_added[i] = model.links[i].added_inertia.has_value();
+    if (has_added[i]) added[i] = data.added_inertia_world[i];
+  }
   for (int i = n - 1; i >= 1; --i) {
     const Joint& joint = model.joints[i];
-    if (joint.parent > 0) data.composite_inertia_world[joint.parent] += data.composite_inertia_world[i];
-    if (joint.nv == 0) continue;
-    const auto S_i = data.motion_subspace_world.middleCols(joint.v_index, joint.nv);
-    // F = Ic_i S_i; M_ji = S_j^T F for i and every ancestor j.
-    const Eigen::Matrix<double, 6, Eigen::Dynamic, 0, 6, 6> F = data.composite_inertia_world[i] * S_i;
-    data.mass_matrix.block(joint.v_index, joint.v_index, joint.nv, joint.nv).noalias() = S_i.transpose() * F;
-    for (int j = joint.parent; j > 0; j = model.joints[j].parent) {
-      const Joint& ancestor = model.joints[j];
-      if (ancestor.nv == 0) continue;
-      auto block = data.mass_matrix.block(ancestor.v_index, joint.v_index, ancestor.nv, joint.nv);
-      block.noalias() = data.motion_subspace_world.middleCols(ancestor.v_index, ancestor.nv).transpose() * F;
-      data.mass_matrix.block(joint.v_index, ancestor.v_index, joint.nv, ancestor.nv) = block.transpose();
+    const int parent = joint.parent;
+    if (parent > 0) {
+      rigid[parent] += rigid[i];
+      if (has_added[i]) {
+        if (has_added[parent]) added[parent] += added[i];
+        else added[parent] = added[i];
+        has_added[parent] = 1;
+      }
+    }
+    for (int c = joint.v_index; c < joint.v_index + joint.nv; ++c) {
+      Force F = rigid[i] * Motion(S.col(c));
+      if (has_added[i]) F += added[i] * Motion(S.col(c));
+      M(c, c) = dot(S.col(c), F);
+      for (int k = coordinate_parent[c]; k >= 0; k = coordinate_parent[k]) M(c, k) = M(k, c) = dot(S.col(k), F);
     }
   }
-  return data.mass_matrix;
+  return M;
 }
 
 const MatrixX& crba(const Model& model, Data& data, const VectorX& q) {

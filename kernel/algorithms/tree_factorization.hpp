@@ -14,11 +14,6 @@
 
 namespace heavesim {
 
-/// For every velocity coordinate c: the coordinate before it on the path to the root (the
-/// previous coordinate of the same joint, else the last coordinate of the nearest ancestor
-/// joint that has any), -1 at a root. Always parent[c] < c.
-std::vector<int> velocity_coordinate_parents(const Model& model);
-
 /// Overwrites the lower triangle of `factor` (n x n, holding M's lower triangle on entry)
 /// with L such that M = L^T L. Reads and writes only the entries (i, j) with j an
 /// ancestor-or-self of i. False (factor partly overwritten) if a pivot is not positive:

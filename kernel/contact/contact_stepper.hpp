@@ -147,7 +147,7 @@ class ContactStepper {
   MatrixX minv_jacobian_t_;  ///< nv x rows: M^-1 J^T
   MatrixX delassus_;         ///< rows x rows: A
   VectorX offset_, impulses_, previous_impulses_, friction_coefficient_, lower_, upper_;
-  VectorX fixed_lower_, fixed_upper_, previous_normal_;  ///< solve_with_fixed_friction_bounds
+  VectorX fixed_lower_, fixed_upper_, previous_normal_, best_impulses_;  ///< solve_with_fixed_friction_bounds
   Eigen::VectorXi friction_normal_;
   ComplementarityWorkspace workspace_;
   bool chain_has_dantzig_ = false;  ///< the fixed-friction-box fallback solves with Dantzig: only if the chain allows it

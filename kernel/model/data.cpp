@@ -25,7 +25,10 @@ Data::Data(const Model& model)
   acceleration_world.assign(n, Motion::Zero());
   joint_wrench_world.assign(n, Force::Zero());
   tau = VectorX::Zero(model.nv);
-  composite_inertia_world.assign(n, Matrix6::Zero());
+  velocity_coordinate_parent = velocity_coordinate_parents(model);
+  composite_rigid_inertia_world.assign(n, InertiaAboutOrigin());
+  composite_added_inertia_world.assign(n, Matrix6::Zero());
+  composite_has_added_inertia.assign(n, 0);
   mass_matrix = MatrixX::Zero(model.nv, model.nv);
   const int m = model.num_constraint_rows;
   constraint_residual = VectorX::Zero(m);

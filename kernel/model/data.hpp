@@ -86,7 +86,16 @@ struct Data {
   VectorX tau;                                    // nv, generalized forces from inverse dynamics
 
   // --- mass matrix (CRBA) ---
-  AlignedVector<Matrix6> composite_inertia_world;
+  // velocity_coordinate_parents(model): the path from a coordinate to the root, along
+  // which M's nonzero entries lie (a copy of the model's topology, kept here so that the
+  // Model needs no derived state).
+  std::vector<int> velocity_coordinate_parent;
+  // Composite inertia of each link's subtree, world coordinates about the origin: the
+  // rigid bodies' part, and the added (e.g. hydrodynamic) part of the subtrees that have
+  // any (composite_has_added_inertia; the others skip it: cost follows the case).
+  AlignedVector<InertiaAboutOrigin> composite_rigid_inertia_world;
+  AlignedVector<Matrix6> composite_added_inertia_world;
+  std::vector<unsigned char> composite_has_added_inertia;
   MatrixX mass_matrix;                            // nv x nv, both triangles filled
   Eigen::LLT<MatrixX> mass_matrix_cholesky;     // of mass_matrix; current with StageMarker::mass_factor
 

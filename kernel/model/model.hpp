@@ -83,4 +83,9 @@ struct Model {
   VectorX neutral_configuration() const;
 };
 
+/// For every velocity coordinate c: the coordinate before it on the path to the root (the
+/// previous coordinate of the same joint, else the last coordinate of the nearest ancestor
+/// joint that has any), -1 at a root. Always parent[c] < c.
+std::vector<int> velocity_coordinate_parents(const Model& model);
+
 }  // namespace heavesim

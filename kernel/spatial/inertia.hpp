@@ -74,6 +74,72 @@ class Inertia {
   Matrix3 inertia_com_;
 };
 
+/// The rigid-body inertia of one or more bodies about the origin of the frame it is
+/// expressed in, in the parameters that simply add when bodies are lumped together
+/// (Featherstone 2008, sec. 2.13 and 2.15):
+///   mass            m    [kg]
+///   first_moment    h    [kg m]   = m c
+///   about_origin    I_O  [kg m^2] = I_c + m (|c|^2 1 - c c^T), frame axes
+/// As a 6x6 operator on [omega; v]: [I_O  [h]x ; [h]x^T  m 1]. The composite inertias of
+/// CRBA add 13 numbers per body this way instead of 36, and apply in 27 multiplications.
+class InertiaAboutOrigin {
+ public:
+  InertiaAboutOrigin() : mass_(0.0), first_moment_(Vector3::Zero()), about_origin_(Matrix3::Zero()) {}
+  /// The inertia given in frame B (about its CoM, B axes), in frame A about A's origin
+  /// (X = X_A_B): c_A = X c, I_c rotated to A axes, then moved to the origin by
+  /// -m [c]x [c]x = m (|c|^2 1 - c c^T) (parallel axes).
+  explicit InertiaAboutOrigin(const Inertia& inertia) { assign(inertia); }
+  /// The same, in place (CRBA writes each composite where it is kept: a temporary's
+  /// scalar stores reloaded as 16-byte copies would stall store forwarding).
+  HEAVESIM_INLINE void assign(const Inertia& inertia) {
+    // m (|c|^2 1 - c c^T) written out, each entry stored once and not read back: an
+    // Eigen read-modify-write of the diagonal reloaded 16 bytes across two stores, a
+    // store-forwarding stall that was 14 % of CRBA.
+    const double m = inertia.mass(), cx = inertia.com().x(), cy = inertia.com().y(), cz = inertia.com().z();
+    const double hx = m * cx, hy = m * cy, hz = m * cz;
+    const Matrix3& I = inertia.inertia_com();
+    mass_ = m;
+    first_moment_ = Vector3(hx, hy, hz);
+    about_origin_(0, 0) = I(0, 0) + hy * cy + hz * cz;
+    about_origin_(1, 1) = I(1, 1) + hx * cx + hz * cz;
+    about_origin_(2, 2) = I(2, 2) + hx * cx + hy * cy;
+    about_origin_(0, 1) = about_origin_(1, 0) = I(0, 1) - hx * cy;
+    about_origin_(0, 2) = about_origin_(2, 0) = I(0, 2) - hx * cz;
+    about_origin_(1, 2) = about_origin_(2, 1) = I(1, 2) - hy * cz;
+  }
+
+  double mass() const { return mass_; }
+  const Vector3& first_moment() const { return first_moment_; }
+  const Matrix3& about_origin() const { return about_origin_; }
+  /// As a 6x6 operator on [omega; v].
+  Matrix6 matrix() const {
+    Matrix6 I;
+    I.topLeftCorner<3, 3>() = about_origin_;
+    I.topRightCorner<3, 3>() = skew(first_moment_);
+    I.bottomLeftCorner<3, 3>() = -skew(first_moment_);
+    I.bottomRightCorner<3, 3>() = mass_ * Matrix3::Identity();
+    return I;
+  }
+
+  HEAVESIM_INLINE InertiaAboutOrigin& operator+=(const InertiaAboutOrigin& other) {
+    mass_ += other.mass_;
+    first_moment_ += other.first_moment_;
+    about_origin_ += other.about_origin_;
+    return *this;
+  }
+
+  /// Momentum h = I v: angular I_O w + h x v, linear m v - h x w.
+  HEAVESIM_INLINE Force operator*(const Motion& v) const {
+    return Force(about_origin_ * v.angular() + first_moment_.cross(v.linear()),
+                 mass_ * v.linear() - first_moment_.cross(v.angular()));
+  }
+
+ private:
+  double mass_;
+  Vector3 first_moment_;
+  Matrix3 about_origin_;
+};
+
 /// A general symmetric 6x6 spatial inertia (articulated, composite, or including
 /// hydrodynamic added mass) given in frame B, re-expressed in frame A:
 ///   I_A = X_A_B^* I_B X_A_B^{-1}.

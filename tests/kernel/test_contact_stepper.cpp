@@ -362,7 +362,9 @@ TEST(ContactStepper, FrictionPolygonHoldsUpToItsSupportInEveryDirection) {
         push[1] = Force::at_point(centre, factor * support * Vector3(std::cos(phi), std::sin(phi), 0.0));
         for (int step = 0; step < 200; ++step) {
           push[1] = Force::at_point(run.q.head<3>(), push[1].linear());
-          ASSERT_TRUE(run.stepper.step(run.data, run.t, h, run.q, run.v, run.tau, push).ok());
+          const ContactStepReport report = run.stepper.step(run.data, run.t, h, run.q, run.v, run.tau, push);
+          ASSERT_TRUE(report.ok()) << "k = " << k << ", phi = " << phi << ", factor " << factor << ", step " << step
+                                   << ": " << to_string(report.solve.status) << " " << report.solve.message;
           run.t += h;
         }
         const double speed = run.v.tail<3>().head<2>().norm();

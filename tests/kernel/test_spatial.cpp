@@ -106,6 +106,28 @@ TEST_F(SpatialTest, SumOfInertiasIsSumOfMatrices) {
   EXPECT_TRUE((a + b).matrix().isApprox(a.matrix() + b.matrix(), 1e-14));
 }
 
+// The additive form about the origin (CRBA's composite inertias) against eq. 2.63's
+// matrix of the same body moved by X (X* I X^-1): its matrix, its product with a
+// motion, and the sum of two bodies.
+TEST_F(SpatialTest, InertiaAboutTheOriginIsEquation263AndAdds) {
+  for (int trial = 0; trial < 50; ++trial) {
+    const Transform X = random_transform();
+    const Matrix6 X_motion_inverse = X.motion_matrix().inverse();
+    Matrix3 I_c;
+    I_c << 2.0, 0.1, -0.2, 0.1, 1.5, 0.05, -0.2, 0.05, 1.8;
+    const Inertia body(1.7, Vector3(0.1, -0.3, 0.2), I_c);
+    const Matrix6 expected = X_motion_inverse.transpose() * body.matrix() * X_motion_inverse;
+    const InertiaAboutOrigin about_origin(body.transformed(X));
+    EXPECT_TRUE(about_origin.matrix().isApprox(expected, 1e-13));
+    const Vector6 v = random6();
+    EXPECT_TRUE((about_origin * Motion(v)).vector().isApprox(expected * v, 1e-13));
+    const Inertia other(0.4, Vector3(-0.2, 0.5, 0.1), Vector3(0.3, 0.2, 0.25).asDiagonal());
+    InertiaAboutOrigin sum = about_origin;
+    sum += InertiaAboutOrigin(other);
+    EXPECT_TRUE(sum.matrix().isApprox(expected + other.matrix(), 1e-13));
+  }
+}
+
 TEST_F(SpatialTest, QuaternionDerivativeIsHalfQTimesOmega) {
   const Eigen::Quaterniond q = Eigen::Quaterniond(0.3, -0.5, 0.7, 0.2).normalized();
   const Vector3 omega(0.4, -1.1, 0.8);
