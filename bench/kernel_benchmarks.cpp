@@ -6,6 +6,7 @@
 #include <random>
 
 #include "samples/bench_models.hpp"
+#include "samples/hanging_chain.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 
@@ -106,6 +107,22 @@ void BM_ABAWithReactions(benchmark::State& state) {
     benchmark::DoNotOptimize(w.data.joint_wrench_world.data());
   });
 }
+
+/// Set-up of an n-link chain as a case builds it: the model through ModelBuilder
+/// (samples::hanging_chain: names, joints, inertias, topology) and its Data (every
+/// workspace sized once). Issue #18 asks for O(n) and at most 10 ms at 128 links;
+/// Google Benchmark fits the exponent over n = 16 .. 1024.
+void BM_SetUp(benchmark::State& state) {
+  const std::vector<double> masses(static_cast<std::size_t>(state.range(0)), 10.0);
+  for (auto _ : state) {
+    const Model model = samples::hanging_chain(masses);
+    Data data(model);
+    benchmark::DoNotOptimize(data.mass_matrix.data());
+  }
+  state.SetComplexityN(state.range(0));
+  state.SetLabel("hanging chain, " + std::to_string(state.range(0)) + " links");
+}
+BENCHMARK(BM_SetUp)->RangeMultiplier(2)->Range(16, 1024)->Complexity();
 
 #define HEAVESIM_MODELS ->Arg(0)->Arg(1)->Arg(2)->Arg(3)
 BENCHMARK(BM_PositionStage) HEAVESIM_MODELS;
