@@ -65,7 +65,7 @@ void BM_MassSolveDense(benchmark::State& state) {
 
 void BM_MassSolveTree(benchmark::State& state) {
   MassSolveWorkload w(static_cast<int>(state.range(0)));
-  const std::vector<int> parent = velocity_coordinate_parents(*w.scene.model);
+  const std::vector<int>& parent = w.scene.model->velocity_coordinate_parent;
   MatrixX factor = w.data.mass_matrix, result = w.jacobian_t;
   for (auto _ : state) {
     for (int i = 0; i < factor.rows(); ++i)

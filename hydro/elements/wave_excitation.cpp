@@ -15,7 +15,7 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
   angular_frequencies_.resize(n);
   weights_.resize(2 * n, 7);
   phasors_.setZero(2 * n);
-  for (Eigen::ArrayXd* a : {&grid_cosines_, &grid_sines_, &cell_cos_}) a->setZero(n);
+  for (Eigen::ArrayXd* a : {&grid_cosines_, &grid_sines_, &scratch_cosines_}) a->setZero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const WaveComponent& c = components[j];
     const double phase = c.phase - c.wave_number * (mean_position.x() * std::cos(c.heading) +
@@ -52,9 +52,9 @@ void WaveExcitation::move_grid(long k) const {
     from = first;
   }
   for (; from < k; ++from) {  // (c + i s)(rc + i rs)
-    cell_cos_ = grid_cosines_ * cell_cosines_ - grid_sines_ * cell_sines_;
+    scratch_cosines_ = grid_cosines_ * cell_cosines_ - grid_sines_ * cell_sines_;
     grid_sines_ = grid_cosines_ * cell_sines_ + grid_sines_ * cell_cosines_;
-    grid_cosines_ = cell_cos_;
+    grid_cosines_ = scratch_cosines_;
   }
   grid_cell_ = k;
 }

@@ -5,14 +5,15 @@ namespace heavesim {
 // World form of the composite-rigid-body algorithm, one velocity coordinate at a time:
 // with every S and composite inertia in world coordinates about the origin, the force
 // F_c = Ic_i s_c that coordinate c of joint i needs is the same vector for every
-// coordinate k on its path to the root, so M(k, c) = s_k . F_c needs no transform
+// coordinate k on its path to the root (Model::velocity_coordinate_parent), so
+// M(k, c) = s_k . F_c needs no transform
 // (Featherstone 2008, table 6.2 with the transforms gone). Only the entries on those
 // paths are written; the others are zero from the Data's construction and stay so.
 // The rigid part of Ic adds as InertiaAboutOrigin (13 numbers); a 6x6 added part is
 // carried only through subtrees that have one.
 const MatrixX& mass_matrix(const Model& model, Data& data) {
   const int n = model.num_links();
-  const std::vector<int>& coordinate_parent = data.velocity_coordinate_parent;
+  const std::vector<int>& coordinate_parent = model.velocity_coordinate_parent;
   const Matrix6X& S = data.motion_subspace_world;
   MatrixX& M = data.mass_matrix;
   auto& rigid = data.composite_rigid_inertia_world;

@@ -56,7 +56,6 @@ ContactStepper::ContactStepper(const Model& model, ContactModel contacts, int ma
   free_velocity_.resize(nv);
   velocity_next_.resize(nv);
   configuration_next_.resize(model.nq);
-  coordinate_parent_ = velocity_coordinate_parents(model);
   mass_factor_.resize(nv, nv);
   jacobian_.resize(capacity_rows_, nv);
   row_links_.resize(capacity_rows_);
@@ -178,13 +177,13 @@ ContactStepReport ContactStepper::step(Data& data, double t, double h, VectorX& 
   // contact row, then cost the coordinates' depths instead of nv^2 each.
   const MatrixX& M = mass_matrix(model_, data);
   for (int i = 0; i < model_.nv; ++i)
-    for (int j = i; j >= 0; j = coordinate_parent_[j]) mass_factor_(i, j) = M(i, j);
-  if (!factorize_tree(coordinate_parent_, mass_factor_)) {
+    for (int j = i; j >= 0; j = model_.velocity_coordinate_parent[j]) mass_factor_(i, j) = M(i, j);
+  if (!factorize_tree(model_.velocity_coordinate_parent, mass_factor_)) {
     report.solve.status = ComplementarityStatus::singular_pivot;
     report.solve.message = "the joint-space inertia matrix is not positive definite (a body without mass?)";
     return report;
   }
-  solve_tree(coordinate_parent_, mass_factor_, free_velocity_);
+  solve_tree(model_.velocity_coordinate_parent, mass_factor_, free_velocity_);
   free_velocity_ = v + h * free_velocity_;
   // A free joint's linear velocity is in its moving (child) axes, whose rate holds the
   // term -omega x v_linear (in C above). Stepping that term explicitly while the axes
@@ -348,7 +347,7 @@ ContactStepReport ContactStepper::solve_and_advance(ContactStepReport report, do
     for (int r = 0; r < rows; ++r) {
       auto column = minv_jt.col(r);
       column = J.row(r).transpose();
-      solve_tree(coordinate_parent_, mass_factor_, column);
+      solve_tree(model_.velocity_coordinate_parent, mass_factor_, column);
     }
     // A's row i = sum over the columns c that row i of J touches of J(i, c) (M^-1 J^T)
     // row c: a contact row touches only the joints from its two links to the root (12

@@ -140,7 +140,6 @@ class ContactStepper {
   int previous_rows_ = -1;
   VectorX zero_acceleration_, free_velocity_, velocity_next_;
   VectorX configuration_next_;
-  std::vector<int> coordinate_parent_;  ///< velocity_coordinate_parents(model)
   MatrixX mass_factor_;      ///< nv x nv: L of M = L^T L (ancestor entries only)
   MatrixX jacobian_;         ///< rows x nv
   std::vector<std::pair<int, int>> row_links_;  ///< per row: the two links whose chains it touches

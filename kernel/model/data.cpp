@@ -25,7 +25,6 @@ Data::Data(const Model& model)
   acceleration_world.assign(n, Motion::Zero());
   joint_wrench_world.assign(n, Force::Zero());
   tau = VectorX::Zero(model.nv);
-  velocity_coordinate_parent = velocity_coordinate_parents(model);
   composite_rigid_inertia_world.assign(n, InertiaAboutOrigin());
   composite_added_inertia_world.assign(n, Matrix6::Zero());
   composite_has_added_inertia.assign(n, 0);

@@ -86,10 +86,6 @@ struct Data {
   VectorX tau;                                    // nv, generalized forces from inverse dynamics
 
   // --- mass matrix (CRBA) ---
-  // velocity_coordinate_parents(model): the path from a coordinate to the root, along
-  // which M's nonzero entries lie (a copy of the model's topology, kept here so that the
-  // Model needs no derived state).
-  std::vector<int> velocity_coordinate_parent;
   // Composite inertia of each link's subtree, world coordinates about the origin: the
   // rigid bodies' part, and the added (e.g. hydrodynamic) part of the subtrees that have
   // any (composite_has_added_inertia; the others skip it: cost follows the case).

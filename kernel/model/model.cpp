@@ -33,17 +33,4 @@ VectorX Model::neutral_configuration() const {
   return q;
 }
 
-std::vector<int> velocity_coordinate_parents(const Model& model) {
-  std::vector<int> parent(model.nv, -1);
-  for (int i = 1; i < model.num_links(); ++i) {
-    const Joint& joint = model.joints[i];
-    if (joint.nv == 0) continue;
-    int ancestor = joint.parent;
-    while (ancestor > 0 && model.joints[ancestor].nv == 0) ancestor = model.joints[ancestor].parent;
-    parent[joint.v_index] = ancestor > 0 ? model.joints[ancestor].v_index + model.joints[ancestor].nv - 1 : -1;
-    for (int c = joint.v_index + 1; c < joint.v_index + joint.nv; ++c) parent[c] = c - 1;
-  }
-  return parent;
-}
-
 }  // namespace heavesim

@@ -66,6 +66,12 @@ struct Model {
   std::vector<Joint> joints;  // joints[i] moves links[i]; joints[0] is a placeholder
   std::vector<Constraint> constraints;  // loop joints, distances, couplers (closed loops)
   int num_constraint_rows = 0;          // m: scalar constraint equations in all constraints
+  // For every velocity coordinate c: the coordinate before it on the path to the root
+  // (the previous coordinate of the same joint, else the last coordinate of the nearest
+  // ancestor joint that has any), -1 at a root; always < c. M's nonzero entries lie on
+  // these paths (CRBA, the tree-sparse L^T L). Derived topology, like subtree_end: set
+  // by ModelBuilder.
+  std::vector<int> velocity_coordinate_parent;
   Vector3 gravity = Vector3(0.0, 0.0, -9.81);  // m/s^2, world frame
   int nq = 0;
   int nv = 0;
@@ -82,10 +88,5 @@ struct Model {
   /// Configuration with every joint at its neutral value (unit quaternions, zeros).
   VectorX neutral_configuration() const;
 };
-
-/// For every velocity coordinate c: the coordinate before it on the path to the root (the
-/// previous coordinate of the same joint, else the last coordinate of the nearest ancestor
-/// joint that has any), -1 at a root. Always parent[c] < c.
-std::vector<int> velocity_coordinate_parents(const Model& model);
 
 }  // namespace heavesim

@@ -449,6 +449,16 @@ Model ModelBuilder::build() const {
     for (int c : model.links[i].children)
       model.links[i].subtree_end = std::max(model.links[i].subtree_end, model.links[c].subtree_end);
   }
+  model.velocity_coordinate_parent.assign(model.nv, -1);
+  for (int i = 1; i < model.num_links(); ++i) {
+    const Joint& joint = model.joints[i];
+    if (joint.nv == 0) continue;
+    int ancestor = joint.parent;
+    while (ancestor > 0 && model.joints[ancestor].nv == 0) ancestor = model.joints[ancestor].parent;
+    model.velocity_coordinate_parent[joint.v_index] =
+        ancestor > 0 ? model.joints[ancestor].v_index + model.joints[ancestor].nv - 1 : -1;
+    for (int c = joint.v_index + 1; c < joint.v_index + joint.nv; ++c) model.velocity_coordinate_parent[c] = c - 1;
+  }
   return model;
 }
 

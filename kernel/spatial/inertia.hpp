@@ -27,6 +27,9 @@ class Inertia {
     return Force(inertia_com_ * m.angular() + com_.cross(linear), linear);
   }
 
+  /// As a 6x6 operator on [omega; v]. The parallel-axis sum is written out here and in
+  /// InertiaAboutOrigin::assign: delegating to that class cost ABA 8-10 % (a temporary's
+  /// stores reloaded as a 6x6; docs/performance.md).
   Matrix6 matrix() const {
     // -m [c]x [c]x = m (|c|^2 1 - c c^T), written out (this runs once per body per step).
     Matrix6 I;
@@ -85,9 +88,8 @@ class Inertia {
 class InertiaAboutOrigin {
  public:
   InertiaAboutOrigin() : mass_(0.0), first_moment_(Vector3::Zero()), about_origin_(Matrix3::Zero()) {}
-  /// The inertia given in frame B (about its CoM, B axes), in frame A about A's origin
-  /// (X = X_A_B): c_A = X c, I_c rotated to A axes, then moved to the origin by
-  /// -m [c]x [c]x = m (|c|^2 1 - c c^T) (parallel axes).
+  /// A body's inertia (about its CoM, this frame's axes) moved to the frame's origin by
+  /// the parallel-axis term -m [c]x [c]x = m (|c|^2 1 - c c^T).
   explicit InertiaAboutOrigin(const Inertia& inertia) { assign(inertia); }
   /// The same, in place (CRBA writes each composite where it is kept: a temporary's
   /// scalar stores reloaded as 16-byte copies would stall store forwarding).

@@ -171,7 +171,7 @@ class DeckSlipReference {
       if (mode == 0) {
         // Stick until the demanded friction -a_x exceeds mu (g + a_z).
         const auto excess = [&](double t) { return std::abs(ax(t)) - mu_ * (g + az(t)); };
-        const double end = next_root(excess, t0, times.back());
+        const double end = testing::first_positive(excess, t0, times.back());
         while (k < times.size() && times[k] <= end) out.push_back(0.0), ++k;
         if (end >= times.back()) break;
         t0 = end;
@@ -183,8 +183,8 @@ class DeckSlipReference {
           return u_start - (vx(t) - vx(start)) - s * mu_ * (g * (t - start) + vz(t) - vz(start));
         };
         const auto crossing = [&](double t) { return t - start < 1e-12 ? s : u(t); };
-        const double end = next_root([&](double t) { return s * crossing(t) <= 0 ? 1.0 : -1.0; }, start + 1e-9,
-                                     times.back());
+        const double end = testing::first_positive([&](double t) { return s * crossing(t) <= 0 ? 1.0 : -1.0; },
+                                                   start + 1e-9, times.back());
         while (k < times.size() && times[k] <= end) out.push_back(u(times[k])), ++k;
         if (end >= times.back()) break;
         t0 = end;
@@ -203,10 +203,6 @@ class DeckSlipReference {
   }
   double vx(double t) const { return d_.surge_amplitude * d_.omega * std::cos(d_.omega * t); }
   double vz(double t) const { return d_.heave_amplitude * d_.omega * std::cos(d_.omega * t + d_.phase); }
-  template <typename F>
-  static double next_root(const F& f, double from, double to) {
-    return testing::first_positive(f, from, to);
-  }
   samples::MovingDeck d_;
   double mu_;
 };

@@ -16,7 +16,7 @@ namespace {
 void expect_factor_and_solve(const Model& model, const VectorX& q, std::mt19937_64& random) {
   Data data(model);
   const MatrixX M = crba(model, data, q);
-  const std::vector<int> parent = velocity_coordinate_parents(model);
+  const std::vector<int>& parent = model.velocity_coordinate_parent;
   for (int c = 0; c < model.nv; ++c) ASSERT_LT(parent[c], c);
   // Entries that are not (descendant, ancestor) pairs must be unused: fill them with NaN.
   MatrixX factor = MatrixX::Constant(model.nv, model.nv, std::nan(""));
@@ -50,7 +50,7 @@ TEST(TreeFactorization, MatchesTheDenseCholeskyOnRandomTrees) {
 TEST(TreeFactorization, FreeBodiesFactorBlockByBlock) {
   // Five free cubes: M is block diagonal, each coordinate's parents stay in its own body.
   const samples::ContactScene stack = samples::box_stack(5, 1.0, 2.0, 10.0, 0.0);
-  const std::vector<int> parent = velocity_coordinate_parents(*stack.model);
+  const std::vector<int>& parent = stack.model->velocity_coordinate_parent;
   for (int c = 0; c < stack.model->nv; ++c) EXPECT_EQ(parent[c], c % 6 == 0 ? -1 : c - 1);
   std::mt19937_64 random(5);
   expect_factor_and_solve(*stack.model, stack.q, random);
