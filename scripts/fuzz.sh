@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
-# Builds the libFuzzer targets (fuzz/; clang 14, AddressSanitizer + UBSan) in
-# build-fuzz/, replays the committed regression inputs, then fuzzes each target for a
-# bounded time from a seed corpus gathered from the project's own cases and data files.
+# Builds the libFuzzer targets (fuzz/) in the checked build (scripts/checked_build.sh:
+# clang 14, AddressSanitizer + UBSan; build-checked/), replays the committed regression
+# inputs, then fuzzes each target for a bounded time from a seed corpus gathered from
+# the project's own cases and data files.
 #   scripts/fuzz.sh [SECONDS_PER_TARGET] [TARGET...]
 #     SECONDS_PER_TARGET  default 60
 #     TARGET              fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine fuzz_mksim (default all)
 # Prints per target the executions, libFuzzer's final coverage (cov: edges, ft: features)
 # and the findings (crash, unexpected exception, leak, timeout, out-of-memory: saved under
-# build-fuzz/work/<target>/findings/; each target fuzzes its whole budget past findings).
+# build-checked/work/<target>/findings/; each target fuzzes its whole budget past findings).
 # Exits 1 if a regression input fails or a finding is in this project's code (findings
-# inside libhdf5 are listed, not failed on). Environment:
-#   HEAVESIM_BUILD_LOCK=FILE    hold flock FILE while building (shared machines)
+# inside libhdf5 are listed, not failed on).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 source_dir=$PWD
@@ -19,22 +19,11 @@ shift || true
 all_targets=(fuzz_case fuzz_expression fuzz_wamit fuzz_bemio fuzz_capytaine fuzz_mksim)
 targets=("$@")
 ((${#targets[@]} > 0)) || targets=("${all_targets[@]}")
-build_dir=build-fuzz
-work_dir=$source_dir/$build_dir/work
 
 # ---------------------------------------------------------------- build
-lock=()
-[[ -n "${HEAVESIM_BUILD_LOCK:-}" ]] && lock=(flock "$HEAVESIM_BUILD_LOCK")
-if [[ ! -f "$build_dir/CMakeCache.txt" ]]; then
-  launcher=()
-  command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  CC=clang-14 CXX=clang++-14 cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-    -DHEAVESIM_FUZZ=ON -DHEAVESIM_BUILD_TESTS=OFF -DHEAVESIM_BUILD_BENCH=OFF "${launcher[@]}"
-fi
-build_targets=()
-for target in "${targets[@]}"; do build_targets+=(--target "$target"); done
-"${lock[@]}" cmake --build "$build_dir" -j "$(nproc)" "${build_targets[@]}"
+build_dir=build-checked  # the checked build, shared with the sanitizer pass
+work_dir=$source_dir/$build_dir/work
+scripts/checked_build.sh "${targets[@]}"
 
 # ---------------------------------------------------------------- seeds
 # Seeds are the project's own inputs, gathered afresh each run (nothing large is
@@ -98,18 +87,32 @@ max_len_of() {
 }
 
 # ---------------------------------------------------------------- run
-# Where a finding happened: the first stack frame that is not the sanitizer's, libc's or
-# libFuzzer's. A finding inside libhdf5 (its parser of a damaged file, e.g. H5HG_read on a
-# damaged global heap) is listed but not failed on: it is not this project's code, and
-# the readers guard what they can before calling it (io/hdf5/hdf5_reader.cpp). Frames in
-# the fuzz binary with no source line are the sanitizer runtime's, not ours (our code is
-# built with -g1, so its frames name file:line): e.g. the memcpy/memmove/strlen
-# interceptors that libhdf5 calls, where a timeout's alarm often lands.
-not_ours=' in (__interceptor_|__asan|__sanitizer|__lsan|__ubsan|fuzzer::|malloc|calloc|realloc|free|operator new|abort|raise|__pthread|__libc|__mem|_start|main)|libc\.so|sysdeps|libclang_rt|/compiler-rt/|/fuzz/fuzz_[a-z_]+\+0x[0-9a-f]+\)'
-first_frames() {  # stdin: sanitizer report(s); stdout: each stack's first frame of interest
+# Where a finding happened: the first frame of the failing stack that is either this
+# project's source (a file:line under the source tree; header code inlined into it, the
+# C++ library's and Eigen's, is passed over to the project frame that called it) or
+# libhdf5's. The sanitizer's, libc's, libFuzzer's frames and those of the libraries
+# libhdf5 calls (zlib for deflated chunks) are passed over the same way. A finding
+# inside libhdf5 (its parser of a damaged file, e.g. H5HG_read on a damaged global heap)
+# is listed but not failed on: it is not this project's code, and the readers guard
+# what they can before calling it (io/hdf5/hdf5_reader.cpp). A stack with neither is
+# reported as it is and fails the run.
+# Only the stacks where something went wrong are placed: an AddressSanitizer error's
+# first stack, UBSan's, a timeout's, each leak's allocation. The stacks that describe
+# the memory involved ("freed by", "previously allocated by", "allocated by", a
+# thread's creation) are not where it failed: a read inside libhdf5 through a garbage
+# pointer lands in memory our code freed earlier, and that free is not the finding.
+first_frames() {  # stdin: sanitizer report(s); stdout: each failing stack's deciding frame
   # (not the heap profile an out-of-memory report ends with: what was live, not where it failed)
-  awk '/^Live Heap Allocations/ { exit } /^ +#0 0x/ { stack++ } /^ +#[0-9]+ 0x/ { print stack "\t" $0 }' |
-    grep -avE "$not_ours" | awk -F'\t' '!seen[$1]++ { print $2 }'
+  awk -v ours=" $source_dir/[^ ]*:[0-9]+" '
+    /^Live Heap Allocations/ { exit }
+    /(freed by thread|allocated by thread|created by T[0-9]+ here)/ { describing = 1; next }
+    /ERROR:|runtime error|(Direct|Indirect) leak of|ALARM|deadly signal/ { describing = 0 }
+    /^ +#0 0x/ { stack++; placed[stack] = describing; first[stack] = $0 }
+    /^ +#[0-9]+ 0x/ {
+      if (placed[stack]) next
+      if ($0 ~ /libhdf5/ || $0 ~ ours) { print; placed[stack] = 1 }
+    }
+    END { for (s = 1; s <= stack; s++) if (!placed[s]) print "unplaced stack:" first[s] }'
 }
 # The finding replayed alone: its first frame of interest, or "not reproduced alone".
 where_found() {
@@ -199,6 +202,10 @@ for target in "${targets[@]}"; do
     failed=1
   fi
   echo "fuzz: $line"
+  # Where each of ours happened, in the run's own output (a CI log is all one may see).
+  if ((ours > 0)); then
+    grep -a 'FINDING' "$dir/findings.txt" | cut -c1-400 | sed 's/^/  /'
+  fi
   summary+=("$line")
 done
 echo "fuzz: summary"
