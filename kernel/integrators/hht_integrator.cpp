@@ -63,7 +63,7 @@ void HhtIntegrator::initialize(double t0, const VectorX& y0) {
   correction_.resize(nv_ + nz_);
   phi_.resize(m_);
   newton_matrix_.resize(nv_ + nz_, nv_ + nz_);
-  mass_llt_.compute(MatrixX::Identity(nv_, nv_));  // sizes the storage, defines the status
+  mass_llt_ = SizedCholesky(nv_);  // sized storage, no factor yet
   // The projections use the rows independent at the start (a column-pivoted QR of J^T,
   // as the GGL form keeps its rows): structurally redundant rows -- the out-of-plane
   // rows of a planar loop closed by 3-D revolute joints, 120 of the 200 rows of IFToMM

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "kernel/math/regularized_symmetric_solver.hpp"
+#include "kernel/math/sized_cholesky.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/system/second_order_system.hpp"
 
@@ -83,7 +84,7 @@ class HhtIntegrator : public Integrator {
   Eigen::PartialPivLU<MatrixX> newton_lu_;
   // Projections
   ConstraintTerms terms_;
-  Eigen::LLT<MatrixX> mass_llt_;
+  SizedCholesky mass_llt_;
   std::vector<int> projection_rows_;           // rows independent at the start
   MatrixX projection_jacobian_;                // J of those rows
   MatrixX minv_jt_, schur_;                    // M^-1 J^T, J M^-1 J^T (those rows)

@@ -8,21 +8,13 @@
 // for the multipliers), and a smooth fade-out of directions whose eigenvalue is near
 // or below epsilon instead of a switch. Allocation-free once sized (an eigen- or
 // orthogonal decomposition would allocate inside Eigen on every call).
-#include <Eigen/Cholesky>
-
-#include "kernel/spatial/types.hpp"
+#include "kernel/math/sized_cholesky.hpp"
 
 namespace heavesim {
 
 class RegularizedSymmetricSolver {
  public:
-  explicit RegularizedSymmetricSolver(int size = 0) {
-    // Factor the identity once so that the storage is sized and the factorization
-    // state is defined (Eigen's LLT(size) constructor leaves its status unset, which
-    // a later copy or move reads).
-    regularized_.setIdentity(size, size);
-    cholesky_.compute(regularized_);
-  }
+  explicit RegularizedSymmetricSolver(int size = 0) : regularized_(MatrixX::Zero(size, size)), cholesky_(size) {}
 
   void compute(const MatrixX& S, double relative_regularization) {
     regularized_ = S;
@@ -39,7 +31,7 @@ class RegularizedSymmetricSolver {
 
  private:
   MatrixX regularized_;
-  Eigen::LLT<MatrixX> cholesky_;
+  SizedCholesky cholesky_;
 };
 
 }  // namespace heavesim

@@ -6,10 +6,7 @@
 namespace heavesim {
 
 Data::Data(const Model& model)
-    : kkt_solver(model.num_constraint_rows) {
-  // Factor the identity: sizes the storage and defines the factorization status, which
-  // Eigen's LLT(size) constructor leaves unset (UBSan flags a copy of such a Data).
-  mass_matrix_cholesky.compute(MatrixX::Identity(model.nv, model.nv));
+    : mass_matrix_cholesky(model.nv), kkt_solver(model.num_constraint_rows) {
   const int n = model.num_links();
   q = model.neutral_configuration();
   v = VectorX::Zero(model.nv);

@@ -7,9 +7,8 @@
 // convention): composite and articulated inertias then add without transforms.
 #include <limits>
 
-#include <Eigen/Cholesky>
-
 #include "kernel/math/regularized_symmetric_solver.hpp"
+#include "kernel/math/sized_cholesky.hpp"
 #include "kernel/model/model.hpp"
 
 namespace heavesim {
@@ -93,7 +92,7 @@ struct Data {
   AlignedVector<Matrix6> composite_added_inertia_world;
   std::vector<unsigned char> composite_has_added_inertia;
   MatrixX mass_matrix;                            // nv x nv, both triangles filled
-  Eigen::LLT<MatrixX> mass_matrix_cholesky;     // of mass_matrix; current with StageMarker::mass_factor
+  SizedCholesky mass_matrix_cholesky;           // of mass_matrix; current with StageMarker::mass_factor
 
   // --- constraints (closed loops); sized m = model.num_constraint_rows ---
   VectorX constraint_residual;      // Phi (m)
