@@ -114,7 +114,7 @@ first_frames() {  # stdin: sanitizer report(s); stdout: each failing stack's dec
     }
     END { for (s = 1; s <= stack; s++) if (!placed[s]) print "unplaced stack:" first[s] }'
 }
-# The finding replayed alone: its first frame of interest, or "not reproduced alone".
+# The finding replayed alone: its failing stack's deciding frame, or "not reproduced alone".
 where_found() {
   local binary=$1 input=$2 report
   if report=$(ASAN_OPTIONS=${ASAN_OPTIONS//:log_path=*/} "$binary" -runs=1 -rss_limit_mb=2048 -timeout=20 "$input" 2>&1); then

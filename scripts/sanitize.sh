@@ -3,9 +3,9 @@
 # that read, write or buffer (every malformed case and data file, the result file,
 # hull clipping, radiation memory, the validation table that runs every algorithm;
 # the list is in tests/CMakeLists.txt) in the checked build (scripts/checked_build.sh,
-# build-checked/) and runs them, with the no-allocation tests: this build is also the
-# checked one (Eigen's allocation check and assertions on in every source). Any
-# sanitizer report, Eigen assertion or allocation fails the run.
+# build-checked/: Eigen's allocation check and assertions on in every source) and runs
+# them, with the no-allocation tests. Any sanitizer report, Eigen assertion or
+# allocation fails the run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/checked_build.sh heavesim heavesim_tests heavesim_no_malloc_tests

@@ -459,7 +459,10 @@ ComplementarityResult ContactStepper::solve_with_fixed_friction_bounds(const Com
     result.pivots = solve.pivots;
     result.iterations = round;
     result.attempts = chain.attempts + 1;
-    if (result.residual < best_result.residual) best_result = result, best = z;
+    if (result.residual < best_result.residual) {
+      best_result = result;
+      best = z;
+    }
     if (result.residual <= 1e-8 || change <= 1e-8 * scale) break;
   }
   if (!(best_result.residual <= 1e-6)) return chain;  // the chain's failure stands
