@@ -116,12 +116,18 @@ GeneralizedParetoFit fit_generalized_pareto(const std::vector<double>& data, dou
     return -std::log(sigma) - (1.0 + xi);
   };
   // Grid over t in (-mean / y_max, 1e4]: uniform below 0 (up to the end point of a
-  // bounded tail), logarithmic above.
+  // bounded tail), logarithmic above (a fifth of a decade apart), then a golden-section
+  // search in the best point's two neighbouring intervals. Each evaluation is a log1p per
+  // exceedance: with 401 grid points and a search to 1e-12 the fits were 8 % of a 3-hour
+  // run's process. 81 points and 1e-10 moved the 190 shapes of the free semi's 3-hour run
+  // by 4e-7 relative at most (their standard error is ~0.1 from ~100 exceedances): the
+  // likelihood is flat at its maximum, so round-off, not the tolerance, ends both searches.
+  // Its scores vanish at the fit (tests/signal/test_response_statistics.cpp).
   const double lowest = -mean / y.back() * (1.0 - 1e-9);
   std::vector<double> grid;
-  for (int i = 1; i <= 200; ++i) grid.push_back(lowest * (1.0 - i / 201.0));
+  for (int i = 1; i <= 40; ++i) grid.push_back(lowest * (1.0 - i / 41.0));
   grid.push_back(0.0);
-  for (int i = 0; i <= 200; ++i) grid.push_back(std::pow(10.0, -4.0 + 8.0 * i / 200.0));
+  for (int i = 0; i <= 40; ++i) grid.push_back(std::pow(10.0, -4.0 + 8.0 * i / 40.0));
   std::size_t best = 0;
   double best_profile = profile(grid[0]);
   for (std::size_t i = 1; i < grid.size(); ++i) {
@@ -135,7 +141,7 @@ GeneralizedParetoFit fit_generalized_pareto(const std::vector<double>& data, dou
   const double golden = 0.5 * (std::sqrt(5.0) - 1.0);
   double c = b - golden * (b - a), d = a + golden * (b - a);
   double profile_c = profile(c), profile_d = profile(d);
-  for (int iteration = 0; iteration < 200 && std::abs(b - a) > 1e-12 * (1.0 + std::abs(a)); ++iteration) {
+  for (int iteration = 0; iteration < 200 && std::abs(b - a) > 1e-10 * (1.0 + std::abs(a)); ++iteration) {
     if (profile_c > profile_d) {  // the maximum is in [a, d]: d becomes the new c's partner
       b = d;
       d = c;

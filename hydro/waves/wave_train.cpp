@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "kernel/math/vector_libm.hpp"
 #include "kernel/parameter_error.hpp"
+
 
 namespace heavesim::hydro {
 
@@ -27,8 +29,29 @@ WaveTrain::WaveTrain(std::vector<WaveComponent> components, Ramp ramp, double de
 double WaveTrain::elevation(double t, double x, double y) const {
   const double r = ramp_(t);
   if (r == 0.0) return 0.0;
-  // One expression, reduced without a temporary (no allocation).
-  return r * (amplitude_ * (angular_frequency_ * t - wave_number_x_ * x - wave_number_y_ * y + phase_).cos()).sum();
+  // sum_j a_j cos(theta_j), theta_j = w_j t - kx_j x - ky_j y + phi_j. Two components at a
+  // time through libmvec where it is linked: the recorder asks for the elevation at the
+  // body at every sample, and the scalar cos of large arguments (w t reaches 3e4 rad in
+  // 3 hours) was 11 % of the free semi's 3-hour run and 4 % of the H1 rig's.
+  const Eigen::Index n = amplitude_.size();
+  const double *a = amplitude_.data(), *w = angular_frequency_.data(), *kx = wave_number_x_.data(),
+               *ky = wave_number_y_.data(), *phi = phase_.data();
+  Eigen::Index j = 0;
+  double sum = 0.0;
+#if defined(HEAVESIM_HAVE_LIBMVEC)
+  const __m128d time = _mm_set1_pd(t), x_world = _mm_set1_pd(x), y_world = _mm_set1_pd(y);
+  __m128d total = _mm_setzero_pd();
+  for (; j + 1 < n; j += 2) {
+    const __m128d theta = _mm_add_pd(_mm_sub_pd(_mm_sub_pd(_mm_mul_pd(_mm_loadu_pd(w + j), time),
+                                                           _mm_mul_pd(_mm_loadu_pd(kx + j), x_world)),
+                                                _mm_mul_pd(_mm_loadu_pd(ky + j), y_world)),
+                                     _mm_loadu_pd(phi + j));
+    total = _mm_add_pd(total, _mm_mul_pd(_mm_loadu_pd(a + j), vector_libm::cos(theta)));
+  }
+  sum = vector_libm::lane_sum(total);
+#endif
+  for (; j < n; ++j) sum += a[j] * std::cos(w[j] * t - kx[j] * x - ky[j] * y + phi[j]);
+  return r * sum;
 }
 
 double WaveTrain::variance() const {

@@ -40,8 +40,9 @@ class WaveTrain {
   Ramp ramp_;
   double depth_ = infinite_depth;
   // The components as arrays, the heading's trigonometry done once: the elevation is one
-  // vectorized pass, eta = sum a_j cos(w_j t - kx_j x - ky_j y + phi_j) (the recorder asks
-  // for it at every sample; per component three libm calls were 7 % of a 3-hour run).
+  // pass, eta = sum a_j cos(w_j t - kx_j x - ky_j y + phi_j), with a vector cos (the
+  // recorder asks for it at every sample; per component three libm calls were 7 % of a
+  // 3-hour run).
   Eigen::ArrayXd amplitude_, angular_frequency_, wave_number_x_, wave_number_y_, phase_;
 };
 

@@ -1,5 +1,7 @@
 #include "kernel/algorithms/articulated_body.hpp"
 
+#include "kernel/math/positive_definite_inverse.hpp"
+
 namespace heavesim {
 
 const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
@@ -31,14 +33,13 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
         data.articulated_inertia_world[joint.parent] += Ia;
       }
     } else if (joint.nv == 6) {
-      // A free joint: the same in fixed-size 6 x 6 algebra (unrolled LLT and products; the
-      // dynamic-size path spent ~10 % of a floating platform's run in Eigen's general
-      // LLT and triangular solves).
+      // A free joint: the same in fixed-size 6 x 6 algebra (the dynamic-size path spent
+      // ~10 % of a floating platform's run in Eigen's general LLT and triangular solves).
       const Matrix6 S = data.motion_subspace_world.middleCols<6>(joint.v_index);
       auto U = data.aba_U.middleCols<6>(joint.v_index);
       U.noalias() = IA * S;
       const Matrix6 D = S.transpose() * U;
-      const Matrix6 D_inverse = D.llt().solve(Matrix6::Identity());
+      const Matrix6 D_inverse = positive_definite_inverse<6>(D);
       data.aba_D_inverse[i] = D_inverse;
       auto u = data.aba_u.segment<6>(joint.v_index);
       u.noalias() = tau.segment<6>(joint.v_index) - S.transpose() * pA.vector();

@@ -263,6 +263,20 @@ TEST(HydroBodyResponse, WaveExcitationSumsTheComponents) {
     for (int i = 0; i < 6; ++i) EXPECT_NEAR(load[i], expected[i], 1e-10 * scale[i]) << "t " << t << " mode " << i;
     EXPECT_NEAR(element.elevation(t), sea.elevation(t, mean.x(), mean.y()), 1e-10) << "t " << t;
   }
+  // The load at a time does not depend on the times asked before, bit for bit: reached by
+  // small steps forward, by a jump from far ahead, and by a step back within the grid's
+  // block (a recorder behind the integrator).
+  {
+    const WaveExcitation walked("walked", 1, bem.excitation, sea, mean), jumped("jumped", 1, bem.excitation, sea, mean),
+        stepped_back("back", 1, bem.excitation, sea, mean);
+    for (double t = 420.0; t < 437.3; t += 0.013) walked.load(t);
+    jumped.load(9000.0);
+    stepped_back.load(440.9);
+    for (const WaveExcitation* element : {&walked, &jumped, &stepped_back}) {
+      const Vector6 load = element->load(437.3), reference = WaveExcitation("fresh", 1, bem.excitation, sea, mean).load(437.3);
+      for (int i = 0; i < 6; ++i) EXPECT_EQ(load[i], reference[i]) << element->name() << " mode " << i;
+    }
+  }
   // The largest difference of a load from the direct sum, relative to each mode's scale.
   const auto error_of = [&](double at, const Vector6& load) {
     Vector6 expected = Vector6::Zero(), scale = Vector6::Zero();
