@@ -9,7 +9,7 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
   const int n = model.num_links();
   for (int i = 1; i < n; ++i) {
     data.articulated_inertia_world[i] = link_inertia_matrix(model, data, i);
-    data.articulated_bias_world[i] = data.bias_force_world[i] - data.gravity_force_world[i];
+    data.articulated_bias_world[i] = data.bias_force_world[i] - link_weight(model, data, i);
     if (!external_forces_world.empty()) data.articulated_bias_world[i] -= external_forces_world[i];
   }
 

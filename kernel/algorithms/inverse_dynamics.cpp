@@ -7,13 +7,9 @@ const VectorX& inverse_dynamics(const Model& model, Data& data, const VectorX& q
   const int n = model.num_links();
   for (int i = 1; i < n; ++i) {
     const Joint& joint = model.joints[i];
-    Motion a = data.acceleration_world[joint.parent] + data.bias_acceleration_world[i];
-    if (joint.nv == 1)
-      a += Motion(data.motion_subspace_world.col(joint.v_index) * qdd[joint.v_index]);
-    else if (joint.nv > 1)
-      a += Motion(data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * qdd.segment(joint.v_index, joint.nv));
+    const Motion a = data.acceleration_world[joint.parent] + data.bias_acceleration_world[i] + joint_motion(data, joint, qdd);
     data.acceleration_world[i] = a;
-    Force f = link_momentum(model, data, i, a) + data.bias_force_world[i] - data.gravity_force_world[i];
+    Force f = link_momentum(model, data, i, a) + data.bias_force_world[i] - link_weight(model, data, i);
     if (!external_forces_world.empty()) f -= external_forces_world[i];
     data.joint_wrench_world[i] = f;
   }

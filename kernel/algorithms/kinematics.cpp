@@ -21,10 +21,9 @@ void update_positions(const Model& model, Data& data, const VectorX& q) {
         },
         joint.type);
 
-    const Inertia& inertia = data.rigid_inertia_world[i] = link.inertia.transformed(data.X_world_link[i]);
+    data.rigid_inertia_world[i] = link.inertia.transformed(data.X_world_link[i]);
     if (link.added_inertia)
       data.added_inertia_world[i] = transform_spatial_inertia(data.X_world_link[i], *link.added_inertia);
-    data.gravity_force_world[i] = Force::at_point(inertia.com(), inertia.mass() * model.gravity);
   }
 }
 
@@ -36,12 +35,7 @@ void update_velocities(const Model& model, Data& data, const VectorX& q, const V
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Motion& v_parent = data.velocity_world[joint.parent];
-    Motion joint_velocity;
-    if (joint.nv == 1)
-      joint_velocity = Motion(data.motion_subspace_world.col(joint.v_index) * v[joint.v_index]);
-    else if (joint.nv > 1)
-      joint_velocity =
-          Motion(data.motion_subspace_world.middleCols(joint.v_index, joint.nv) * v.segment(joint.v_index, joint.nv));
+    const Motion joint_velocity = joint_motion(data, joint, v);
     data.velocity_world[i] = v_parent + joint_velocity;
     // Since v_i = v_parent + v_J, v_i x v_J = v_parent x v_J (Featherstone eq. 7.7 in world form).
     Motion bias = v_parent.cross(joint_velocity);

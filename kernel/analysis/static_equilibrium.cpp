@@ -70,7 +70,7 @@ class EquilibriumProblem {
     // The largest load: weights, applied forces and joint forces, multipliers [N or N m].
     double scale = forces.joint_force.size() > 0 ? forces.joint_force.cwiseAbs().maxCoeff() : 0.0;
     for (int i = 1; i < model_.num_links(); ++i) {
-      scale = std::max(scale, data.gravity_force_world[i].linear().norm());
+      scale = std::max(scale, link_weight(model_, data, i).linear().norm());
       scale = std::max(scale, forces.external_force_world[i].linear().norm());
     }
     out.constraint.resize(m_);

@@ -14,7 +14,6 @@ Data::Data(const Model& model)
   motion_subspace_world = Matrix6X::Zero(6, model.nv);
   rigid_inertia_world.assign(n, Inertia());
   added_inertia_world.assign(n, Matrix6::Zero());
-  gravity_force_world.assign(n, Force::Zero());
   velocity_world.assign(n, Motion::Zero());
   bias_acceleration_world.assign(n, Motion::Zero());
   bias_force_world.assign(n, Force::Zero());

@@ -70,7 +70,6 @@ struct Data {
   Matrix6X motion_subspace_world;           // 6 x nv: column k = spatial motion per unit v_k
   AlignedVector<Inertia> rigid_inertia_world;  // rigid-body inertia of each link
   AlignedVector<Matrix6> added_inertia_world;  // added inertia (e.g. hydrodynamic), links that have one
-  AlignedVector<Force> gravity_force_world; // weight m g at the link CoM
 
   // --- velocity stage (update_velocities) ---
   VectorX v;  // nv: the joint velocities of this stage (mjData's qvel), for constraint_bias
