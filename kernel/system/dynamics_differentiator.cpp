@@ -88,29 +88,53 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
     }
   }
   if (!applied) return;
-  // Speeds and element states, at the base configuration.
+  // Speeds, at the base configuration.
   v_perturbed_ = v;
-  y_perturbed_ = y;
   update_positions(model, scratch_data_, q);
-  const int first_column = depends.velocity ? 0 : nv, end_column = depends.element_states ? nv + nz : nv;
-  for (int k = first_column; k < end_column; ++k) {
-    const bool speed = k < nv;
-    if (speed)
+  if (depends.velocity) {
+    for (int k = 0; k < nv; ++k) {
       v_perturbed_[k] += h;
-    else
-      y_perturbed_[nq + k] += h;
-    update_velocities(model, scratch_data_, q, v_perturbed_);
-    system.applied_forces_at(t, scratch_data_, q, v_perturbed_, y_perturbed_, scratch_forces_);
-    generalized_force(data, scratch_forces_, applied_perturbed_);
-    (speed ? out.force_v.col(k) : out.force_z.col(k - nv)) -= (applied_perturbed_ - applied_base_) / h;
-    if (nz > 0) {
-      system.element_state_derivatives(t, y_perturbed_, scratch_data_, rates_perturbed_);
-      (speed ? out.rate_v.col(k) : out.rate_z.col(k - nv)) = (rates_perturbed_ - rates_base_) / h;
-    }
-    if (speed)
+      update_velocities(model, scratch_data_, q, v_perturbed_);
+      system.applied_forces_at(t, scratch_data_, q, v_perturbed_, y, scratch_forces_);
+      generalized_force(data, scratch_forces_, applied_perturbed_);
+      out.force_v.col(k) -= (applied_perturbed_ - applied_base_) / h;
+      if (nz > 0) {
+        system.element_state_derivatives(t, y, scratch_data_, rates_perturbed_);
+        out.rate_v.col(k) = (rates_perturbed_ - rates_base_) / h;
+      }
       v_perturbed_[k] = v[k];
-    else
-      y_perturbed_[nq + k] = y[nq + k];
+    }
+  }
+  if (!depends.element_states || nz == 0) return;
+  // Element states. An element is given only its own states (ForceElement::apply and
+  // state_derivative take its slice of y), so a state's column changes only its own
+  // element's load and rates: each column evaluates that element alone, against that
+  // element's load at the base state. The quotient is the same as that of every element's
+  // total; on the H1 rig 5 of the Newton matrix's 21 difference columns re-evaluated all 7
+  // elements and the velocity stage.
+  update_velocities(model, scratch_data_, q, v);
+  y_perturbed_ = y;
+  const auto& elements = system.force_elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const ForceElement& element = *elements[e];
+    const int size = element.state_size();
+    if (size == 0) continue;
+    const int offset = system.state_offset(e), column = offset - nq - nv;  // in y, in z
+    scratch_forces_.clear();
+    element.apply(t, model, scratch_data_, y.segment(offset, size), scratch_forces_);
+    generalized_force(data, scratch_forces_, element_base_);
+    for (int j = 0; j < size; ++j) {
+      y_perturbed_[offset + j] += h;
+      const auto states = y_perturbed_.segment(offset, size);
+      scratch_forces_.clear();
+      element.apply(t, model, scratch_data_, states, scratch_forces_);
+      generalized_force(data, scratch_forces_, applied_perturbed_);
+      out.force_z.col(column + j) -= (applied_perturbed_ - element_base_) / h;
+      auto rates = rates_perturbed_.segment(column, size);
+      element.state_derivative(t, model, scratch_data_, states, rates);
+      out.rate_z.col(column + j).segment(column, size) = (rates - rates_base_.segment(column, size)) / h;
+      y_perturbed_[offset + j] = y[offset + j];
+    }
   }
 }
 

@@ -40,7 +40,7 @@ class DynamicsDifferentiator {
   AppliedForces scratch_forces_;
   MatrixX rows_jacobian_, jacobian_change_;  // J of the rows in use; dJ/d(tangent k)
   AlignedVector<Force> subtree_forces_;
-  VectorX applied_base_, applied_perturbed_, rates_base_, rates_perturbed_, direction_;
+  VectorX applied_base_, applied_perturbed_, element_base_, rates_base_, rates_perturbed_, direction_;
   VectorX q_perturbed_, v_perturbed_, y_perturbed_;
 };
 
