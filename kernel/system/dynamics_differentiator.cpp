@@ -20,6 +20,18 @@ void DynamicsDifferentiator::generalized_force(const Data& base, const AppliedFo
                             out);
 }
 
+void DynamicsDifferentiator::column_of_every_element(double t, const VectorX& q, const VectorX& v, const VectorX& y,
+                                                     double h, Eigen::Ref<VectorX> force_column,
+                                                     Eigen::Ref<VectorX> rate_column) {
+  MultibodySystem& system = system_;
+  system.applied_forces_at(t, scratch_data_, q, v, y, scratch_forces_);
+  generalized_force(system.data(), scratch_forces_, applied_perturbed_);
+  force_column -= (applied_perturbed_ - applied_base_) / h;
+  if (rate_column.size() == 0) return;
+  system.element_state_derivatives(t, y, scratch_data_, rates_perturbed_);
+  rate_column = (rates_perturbed_ - rates_base_) / h;
+}
+
 void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const VectorX& a, const std::vector<int>& rows,
                                            const VectorX& lambda, DynamicsDerivatives& out, GglDerivatives* ggl) {
   MultibodySystem& system = system_;
@@ -78,13 +90,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
     }
     if (depends.configuration) {
       update_velocities(model, scratch_data_, q_perturbed_, v);
-      system.applied_forces_at(t, scratch_data_, q_perturbed_, v, y, scratch_forces_);
-      generalized_force(data, scratch_forces_, applied_perturbed_);
-      out.force_q.col(k) -= (applied_perturbed_ - applied_base_) / h;
-      if (nz > 0) {
-        system.element_state_derivatives(t, y, scratch_data_, rates_perturbed_);
-        out.rate_q.col(k) = (rates_perturbed_ - rates_base_) / h;
-      }
+      column_of_every_element(t, q_perturbed_, v, y, h, out.force_q.col(k), out.rate_q.col(k));
     }
   }
   if (!applied) return;
@@ -95,13 +101,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
     for (int k = 0; k < nv; ++k) {
       v_perturbed_[k] += h;
       update_velocities(model, scratch_data_, q, v_perturbed_);
-      system.applied_forces_at(t, scratch_data_, q, v_perturbed_, y, scratch_forces_);
-      generalized_force(data, scratch_forces_, applied_perturbed_);
-      out.force_v.col(k) -= (applied_perturbed_ - applied_base_) / h;
-      if (nz > 0) {
-        system.element_state_derivatives(t, y, scratch_data_, rates_perturbed_);
-        out.rate_v.col(k) = (rates_perturbed_ - rates_base_) / h;
-      }
+      column_of_every_element(t, q, v_perturbed_, y, h, out.force_v.col(k), out.rate_v.col(k));
       v_perturbed_[k] = v[k];
     }
   }

@@ -32,6 +32,11 @@ class DynamicsDifferentiator {
   const MatrixX& rows_jacobian() const { return rows_jacobian_; }
 
  private:
+  /// One difference column in q or v, the perturbed stages being in scratch_data_ at (q, v):
+  /// every element's load (subtracted from force_column: the residual holds -Q) and rates
+  /// (into rate_column, empty without element states), against applied_base_ and rates_base_.
+  void column_of_every_element(double t, const VectorX& q, const VectorX& v, const VectorX& y, double h,
+                               Eigen::Ref<VectorX> force_column, Eigen::Ref<VectorX> rate_column);
   /// Q = tau + sum_i J_i^T f_i of `forces`, mapped with the subspaces in `base`.
   void generalized_force(const Data& base, const AppliedForces& forces, VectorX& out);
 
