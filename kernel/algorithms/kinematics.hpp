@@ -26,8 +26,8 @@ inline Force link_momentum(const Model& model, const Data& data, int i, const Mo
 
 /// S_i x: the spatial motion of joint `joint` for its nv speeds or accelerations, read from
 /// `values` (nv) at the joint's v_index, world coordinates; requires update_positions.
-/// Fixed-size for one and six coordinates: a free joint's product through Eigen's
-/// dynamic-size path was ~4 % of a floating rig's run (update_velocities).
+/// Fixed-size for one and six coordinates (a free joint's product would otherwise take
+/// Eigen's dynamic-size path); one function for the velocity stage and RNEA.
 inline Motion joint_motion(const Data& data, const Joint& joint, const VectorX& values) {
   switch (joint.nv) {
     case 0:
@@ -44,8 +44,8 @@ inline Motion joint_motion(const Data& data, const Joint& joint, const VectorX& 
 
 /// The weight m g of link i at its centre of mass [N; N m about the world origin], world
 /// axes; requires update_positions. Computed where a force balance needs it (RNEA, ABA),
-/// not stored by the position stage: the mass matrix does not need it, and for a small
-/// tree it was a tenth of CRBA's time from q.
+/// not stored by the position stage: the mass matrix does not need it (CRBA from q on the
+/// double pendulum 5 % faster without it, docs/performance.md).
 inline Force link_weight(const Model& model, const Data& data, int i) {
   const Inertia& inertia = data.rigid_inertia_world[i];
   return Force::at_point(inertia.com(), inertia.mass() * model.gravity);
