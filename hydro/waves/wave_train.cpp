@@ -9,7 +9,6 @@
 #include "kernel/math/vector_libm.hpp"
 #include "kernel/parameter_error.hpp"
 
-
 namespace heavesim::hydro {
 
 WaveTrain::WaveTrain(std::vector<WaveComponent> components, Ramp ramp, double depth)

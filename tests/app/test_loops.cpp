@@ -63,11 +63,10 @@ TEST(Loops, OverconstrainedCrownBlockReportsRedundancyAndCarriesTheWeight) {
 
 /// The GGL form's Newton matrix of `case_path` at a state moved away from the consistent
 /// one, and central differences of its residual (step 1e-6 in y and in yp).
-std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& case_path, int* differential_size) {
+std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& case_path) {
   const CaseDefinition definition = load_case(testing::source_path(case_path));
   Scene scene = build_scene(definition);
   GglDaeForm system(*scene.system);
-  *differential_size = scene.system->size();
   VectorX y, yp;
   system.dae_initial_values(0.0, scene.initial_state, y, yp);
   const int n = static_cast<int>(y.size());
@@ -101,8 +100,7 @@ std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& cas
 
 TEST(Loops, DaeNewtonMatrixMatchesFiniteDifferencesOfTheResidual) {
   // The slider-crank has a loop joint with redundant rows, a spring-damper and a push.
-  int differential_size = 0;
-  const auto [analytic, numeric] = newton_matrix_and_differences("cases/validation/slider_crank.yaml", &differential_size);
+  const auto [analytic, numeric] = newton_matrix_and_differences("cases/validation/slider_crank.yaml");
   // The analytic matrix uses one-sided differences (step 1e-7) for the spring-damper
   // and the q-dependence of J^T lambda: agreement to ~1e-6 relative is what they give.
   EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-6 * numeric.cwiseAbs().maxCoeff())
@@ -115,9 +113,7 @@ TEST(Loops, DaeNewtonMatrixMatchesFiniteDifferencesOfTheResidual) {
 // (DynamicsDifferentiator); each column of the matrix is checked against its own scale,
 // since the platform's entries (6e7 kg) would hide the hydraulic ones.
 TEST(Loops, DaeNewtonMatrixWithElementStatesMatchesFiniteDifferences) {
-  int differential_size = 0;
-  const auto [analytic, numeric] =
-      newton_matrix_and_differences("cases/c4_irregular_waves/h1_active_hydraulic_3h.yaml", &differential_size);
+  const auto [analytic, numeric] = newton_matrix_and_differences("cases/c4_irregular_waves/h1_active_hydraulic_3h.yaml");
   for (int k = 0; k < numeric.cols(); ++k) {
     const double scale = numeric.col(k).cwiseAbs().maxCoeff() + analytic.col(k).cwiseAbs().maxCoeff();
     EXPECT_LE((analytic.col(k) - numeric.col(k)).cwiseAbs().maxCoeff(), 1e-5 * scale) << "column " << k;
