@@ -7,6 +7,7 @@
 #include <string>
 
 #include "kernel/integrators/explicit_stability.hpp"
+#include "kernel/integrators/serial_vector.hpp"
 
 namespace heavesim {
 
@@ -57,7 +58,7 @@ void ErkIntegrator::initialize(double t0, const VectorX& y0) {
   const int n = system_.size();
   work_y_.resize(n);
   work_f_.resize(n);
-  y_nv_ = N_VNew_Serial(n, context_);
+  y_nv_ = sundials::new_serial_vector(n, context_);  // ARKODE's own vectors are its clones
   sundials::map(y_nv_) = y0;
   arkode_ = ERKStepCreate(&ErkIntegrator::rhs, t0, y_nv_, context_);
   ERKStepSetUserData(arkode_, this);

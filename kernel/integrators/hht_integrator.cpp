@@ -6,6 +6,8 @@
 #include <limits>
 #include <string>
 
+#include "kernel/math/index_list.hpp"
+
 namespace heavesim {
 namespace {
 
@@ -242,7 +244,7 @@ void HhtIntegrator::accept_step(double h) {
   system_.constraint_terms(t_, y_, terms_);
   if (m_ > 0) {
     mass_llt_.compute(terms_.mass);
-    projection_jacobian_ = terms_.jacobian(projection_rows_, Eigen::all);
+    projection_jacobian_ = terms_.jacobian(index_list(projection_rows_), Eigen::all);
     minv_jt_ = projection_jacobian_.transpose();
     mass_llt_.solveInPlace(minv_jt_);
     schur_.noalias() = projection_jacobian_ * minv_jt_;
@@ -268,7 +270,7 @@ void HhtIntegrator::accept_step(double h) {
 
 void HhtIntegrator::project(VectorX& x, const VectorX& target) {
   projection_residual_.noalias() = projection_jacobian_ * x;
-  projection_residual_ -= target(projection_rows_);
+  projection_residual_ -= target(index_list(projection_rows_));
   schur_solver_.solve(projection_residual_, projection_multipliers_);
   x.noalias() -= minv_jt_ * projection_multipliers_;
 }

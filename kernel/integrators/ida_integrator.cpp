@@ -1,7 +1,6 @@
 #include "kernel/integrators/ida_integrator.hpp"
 
 #include <ida/ida.h>
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
@@ -10,6 +9,9 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+
+#include "kernel/integrators/dense_lu_linear_solver.hpp"
+#include "kernel/integrators/serial_vector.hpp"
 
 namespace heavesim {
 
@@ -129,9 +131,9 @@ void IdaIntegrator::restart(double t0) {
   dae_.dae_initial_values(t0, state_, work_y_, work_yp_);  // may fix the DAE's size (kept constraint rows)
   const int n = dae_.dae_size();
   work_r_.resize(n);
-  y_nv_ = N_VNew_Serial(n, context_);
-  yp_nv_ = N_VNew_Serial(n, context_);
-  id_nv_ = N_VNew_Serial(n, context_);
+  y_nv_ = sundials::new_serial_vector(n, context_);  // IDA's own vectors are its clones
+  yp_nv_ = sundials::new_serial_vector(n, context_);
+  id_nv_ = sundials::new_serial_vector(n, context_);
   sundials::map(y_nv_) = work_y_;
   sundials::map(yp_nv_) = work_yp_;
   VectorX mask;
@@ -179,7 +181,7 @@ void IdaIntegrator::restart(double t0) {
     linear_solver_ = SUNLinSol_KLU(y_nv_, matrix_, context_);
   } else {
     matrix_ = SUNDenseMatrix(n, n, context_);
-    linear_solver_ = SUNLinSol_Dense(y_nv_, matrix_, context_);
+    linear_solver_ = sundials::make_dense_lu_linear_solver(matrix_, context_);
   }
   IDASetLinearSolver(ida_, linear_solver_, matrix_);
   if (analytic) IDASetJacFn(ida_, &IdaIntegrator::jacobian);

@@ -27,7 +27,7 @@ inline bool is_fixed_step(IntegrationMethod method) {
 }
 /// Linear solver for IDA's Newton iterations.
 enum class LinearSolver {
-  dense,  // SUNDIALS dense LU
+  dense,  // dense LU with partial pivoting (Eigen, in a SUNDIALS linear solver: dense_lu_linear_solver.hpp)
   sparse  // KLU (SuiteSparse) on the Jacobian's sparsity pattern
 };
 

@@ -9,15 +9,20 @@
 // HEAVESIM_HAVE_LIBMVEC is set by the build target heavesim_vector_libm (kernel/CMakeLists.txt)
 // when libmvec is found on x86-64; without it the callers run their scalar loops. (Its log1p
 // was tried for the Pareto fit's likelihood and was no faster than libm's.)
+#include <cmath>
+#include <cstddef>
+
 #if defined(HEAVESIM_HAVE_LIBMVEC)
 #include <emmintrin.h>
 
 extern "C" {
 __m128d _ZGVbN2v_cos(__m128d);  // cos, two lanes
+__m128d _ZGVbN2v_sin(__m128d);  // sin, two lanes
 }
 
 namespace heavesim::vector_libm {
 inline __m128d cos(__m128d x) { return _ZGVbN2v_cos(x); }
+inline __m128d sin(__m128d x) { return _ZGVbN2v_sin(x); }
 /// The sum of the two lanes.
 inline double lane_sum(__m128d x) {
   alignas(16) double lanes[2];
@@ -26,3 +31,23 @@ inline double lane_sum(__m128d x) {
 }
 }  // namespace heavesim::vector_libm
 #endif
+
+namespace heavesim::vector_libm {
+/// cosines[j] = cos(w[j] t) and sines[j] = sin(w[j] t) for j < n: two at a time through
+/// libmvec where it is linked, libm's scalar functions otherwise (and for an odd last one).
+inline void cos_sin_of_scaled(const double* w, double t, double* cosines, double* sines, std::ptrdiff_t n) {
+  std::ptrdiff_t j = 0;
+#if defined(HEAVESIM_HAVE_LIBMVEC)
+  const __m128d scale = _mm_set1_pd(t);
+  for (; j + 2 <= n; j += 2) {
+    const __m128d x = _mm_mul_pd(_mm_loadu_pd(w + j), scale);
+    _mm_storeu_pd(cosines + j, cos(x));
+    _mm_storeu_pd(sines + j, sin(x));
+  }
+#endif
+  for (; j < n; ++j) {
+    cosines[j] = std::cos(w[j] * t);
+    sines[j] = std::sin(w[j] * t);
+  }
+}
+}  // namespace heavesim::vector_libm

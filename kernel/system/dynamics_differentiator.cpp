@@ -5,6 +5,7 @@
 #include "kernel/algorithms/generalized_force.hpp"
 #include "kernel/algorithms/inverse_dynamics_derivatives.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
+#include "kernel/math/index_list.hpp"
 
 namespace heavesim {
 
@@ -43,7 +44,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
   const VectorX& v = system.velocity();
   if (m > 0) {
     constraint_jacobian(model, data, t, data.constraint_jacobian);
-    rows_jacobian_ = data.constraint_jacobian(rows, Eigen::all);
+    rows_jacobian_ = data.constraint_jacobian(index_list(rows), Eigen::all);
   }
   out.mass.resize(nv, nv);
   out.force_z.setZero(nv, nz);
@@ -79,7 +80,7 @@ void DynamicsDifferentiator::differentiate(double t, const VectorX& y, const Vec
     update_positions(model, scratch_data_, q_perturbed_);
     if (m > 0) {
       constraint_jacobian(model, scratch_data_, t, scratch_data_.constraint_jacobian);
-      jacobian_change_ = scratch_data_.constraint_jacobian(rows, Eigen::all);
+      jacobian_change_ = scratch_data_.constraint_jacobian(index_list(rows), Eigen::all);
       jacobian_change_ -= rows_jacobian_;
       jacobian_change_ /= h;  // dJ/d(tangent k)
       out.force_q.col(k).noalias() -= jacobian_change_.transpose() * lambda;

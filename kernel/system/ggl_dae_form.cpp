@@ -31,6 +31,7 @@
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/mass_matrix.hpp"
 #include "kernel/algorithms/projection.hpp"
+#include "kernel/math/index_list.hpp"
 
 namespace heavesim {
 
@@ -106,7 +107,7 @@ void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, 
   constraint_.resize(kept);
   if (kept == 0) return;
   // Multipliers of the kept rows giving the same constraint force J^T lambda (mu = 0).
-  const MatrixX J_kept = data.constraint_jacobian(rows_, Eigen::all);
+  const MatrixX J_kept = data.constraint_jacobian(index_list(rows_), Eigen::all);
   // How an error in mu moves its constraint over a step h: the BDF corrector turns a
   // d(mu) into a position error h N J^T d(mu), so Phi_i by h (J J^T)_ii d(mu_i)
   // (N+ N = I).
@@ -135,12 +136,12 @@ void GglDaeForm::residual(double t, const VectorX& y, const VectorX& yp, VectorX
     constraint_jacobian(model, data, t, data.constraint_jacobian);
     constraint_residual(model, data, q, t, data.constraint_residual);
     constraint_velocity_target(model, data, t, data.constraint_velocity_target);
-    rows_jacobian_ = data.constraint_jacobian(rows_, Eigen::all);
-    constraint_ = data.constraint_residual(rows_);
+    rows_jacobian_ = data.constraint_jacobian(index_list(rows_), Eigen::all);
+    constraint_ = data.constraint_residual(index_list(rows_));
     r.segment(nq, nv).noalias() -= rows_jacobian_.transpose() * y.segment(size, m);
     w_.noalias() -= rows_jacobian_.transpose() * y.segment(size + m, m);
     r.segment(size, m).noalias() = rows_jacobian_ * v;
-    r.segment(size, m) -= data.constraint_velocity_target(rows_);
+    r.segment(size, m) -= data.constraint_velocity_target(index_list(rows_));
     r.segment(size + m, m) = constraint_;
   }
   qdot_.resize(nq);

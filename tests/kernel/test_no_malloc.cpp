@@ -22,7 +22,9 @@
 #include "kernel/analysis/kinematic_analysis.hpp"
 #include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/spring_damper.hpp"
+#include "kernel/integrators/dense_lu_linear_solver.hpp"
 #include "kernel/integrators/integrator.hpp"
+#include "kernel/integrators/sundials_support.hpp"
 #include "kernel/model/model_builder.hpp"
 #include "kernel/system/ggl_dae_form.hpp"
 #include "kernel/system/multibody_system.hpp"
@@ -210,6 +212,32 @@ TEST(NoMalloc, DaeNewtonMatrixDoesNotAllocate) {
     ForbidAllocation forbid;
     EXPECT_NO_THROW(form.jacobian(0.0, dae_y, dae_yp, 10.0, newton));
   }
+}
+
+TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
+  // IDA factors its Newton matrix with this solver at every matrix and solves with it at
+  // every Newton iteration; a size past Eigen's LU blocking (> 16).
+  const int n = 40;
+  sundials::Context context;
+  SUNMatrix matrix = SUNDenseMatrix(n, n, context);
+  N_Vector rhs = N_VNew_Serial(n, context), solution = N_VNew_Serial(n, context);
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n) = MatrixX::NullaryExpr(n, n, [&] { return entry(random); });
+  sundials::map(rhs) = VectorX::NullaryExpr(n, [&] { return entry(random); });
+  SUNLinearSolver solver = sundials::make_dense_lu_linear_solver(matrix, context);
+  {
+    ForbidAllocation forbid;
+    EXPECT_NO_THROW({
+      EXPECT_EQ(SUNLinSolSetup(solver, matrix), SUNLS_SUCCESS);
+      EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
+      EXPECT_EQ(SUNLinSolSolve(solver, matrix, rhs, rhs, 0.0), SUNLS_SUCCESS);
+    });
+  }
+  SUNLinSolFree(solver);
+  N_VDestroy(rhs);
+  N_VDestroy(solution);
+  SUNMatDestroy(matrix);
 }
 
 TEST(NoMalloc, ClosedLoopExplicitPathDoesNotAllocate) {
