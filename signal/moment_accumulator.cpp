@@ -22,6 +22,46 @@ void MomentAccumulator::add(double x) {
   m2_ += term;
 }
 
+void MomentAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t count) {
+  if (count <= 0) return;
+  // The block's mean, then its central sums.
+  double sum = 0.0, block_minimum = minimum_, block_maximum = maximum_;
+  for (std::int64_t k = 0; k < count; ++k) {
+    const double value = x[k * stride];
+    sum += value;
+    block_minimum = std::min(block_minimum, value);
+    block_maximum = std::max(block_maximum, value);
+  }
+  const double n_b = static_cast<double>(count), mean_b = sum / n_b;
+  double m2_b = 0.0, m3_b = 0.0, m4_b = 0.0;
+  for (std::int64_t k = 0; k < count; ++k) {
+    const double d = x[k * stride] - mean_b, d2 = d * d;
+    m2_b += d2;
+    m3_b += d2 * d;
+    m4_b += d2 * d2;
+  }
+  minimum_ = block_minimum;
+  maximum_ = block_maximum;
+  if (count_ == 0) {
+    count_ = count;
+    mean_ = mean_b;
+    m2_ = m2_b;
+    m3_ = m3_b;
+    m4_ = m4_b;
+    return;
+  }
+  // Pébay (2008) eq. 3.1 with A the samples so far, B the block, delta = mean_B - mean_A.
+  const double n_a = static_cast<double>(count_), n = n_a + n_b;
+  const double delta = mean_b - mean_, delta_n = delta / n;
+  const double product = n_a * n_b;
+  m4_ += m4_b + delta * delta_n * delta_n * delta_n * product * (n_a * n_a - product + n_b * n_b) +
+         6.0 * delta_n * delta_n * (n_a * n_a * m2_b + n_b * n_b * m2_) + 4.0 * delta_n * (n_a * m3_b - n_b * m3_);
+  m3_ += m3_b + delta * delta_n * delta_n * product * (n_a - n_b) + 3.0 * delta_n * (n_a * m2_b - n_b * m2_);
+  m2_ += m2_b + delta * delta_n * product;
+  mean_ += delta_n * n_b;
+  count_ += count;
+}
+
 double MomentAccumulator::standard_deviation() const {
   if (count_ < 2) return nan();
   return std::sqrt(m2_ / static_cast<double>(count_ - 1));

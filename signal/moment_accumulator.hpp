@@ -2,7 +2,11 @@
 // One-pass central moments of a sampled signal up to the fourth, numerically stable:
 // the update of Terriberry (2007) / Pébay (2008, Sandia report SAND2008-6212, eq. 2.1-2.4),
 // which carries M2, M3, M4 (sums of powers of deviations from the running mean) so that no
-// large sums of raw powers cancel.
+// large sums of raw powers cancel. A block of samples is added by its own central sums
+// (two passes over the block) merged with the totals by Pébay's pairwise formulas
+// (SAND2008-6212, eq. 3.1): no division per sample and no chain from one sample to the
+// next, so the recorder's channels pay less for their moments (docs/performance.md).
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -11,6 +15,8 @@ namespace heavesim::stats {
 class MomentAccumulator {
  public:
   void add(double x);
+  /// The samples x[0], x[stride], ..., x[(count - 1) stride].
+  void add(const double* x, std::ptrdiff_t stride, std::int64_t count);
 
   std::int64_t count() const { return count_; }
   double mean() const { return count_ > 0 ? mean_ : nan(); }

@@ -30,6 +30,14 @@ void ResponseStatisticsAccumulator::add(double x) {
   if (welch_) welch_->add(x);
 }
 
+void ResponseStatisticsAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t count) {
+  moments_.add(x, stride, count);
+  if (options_.cycles)
+    for (std::int64_t k = 0; k < count; ++k) turning_points_.add(x[k * stride]);
+  if (welch_)
+    for (std::int64_t k = 0; k < count; ++k) welch_->add(x[k * stride]);
+}
+
 double mean_of_extreme_third(std::vector<double> values, bool largest) {
   const std::size_t third = values.size() / 3;
   if (third == 0) return ResponseStatistics::nan;

@@ -74,6 +74,8 @@ class ResponseStatisticsAccumulator {
   /// when options.segment_length == 0).
   ResponseStatisticsAccumulator(const StatisticsOptions& options, std::int64_t record_samples);
   void add(double x);
+  /// The samples x[0], x[stride], ..., x[(count - 1) stride], in time order.
+  void add(const double* x, std::ptrdiff_t stride, std::int64_t count);
   std::int64_t samples() const { return moments_.count(); }
   /// Everything above; the fits run here (cost: a few passes over the crests).
   ResponseStatistics result();

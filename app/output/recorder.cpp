@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
@@ -127,7 +128,7 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   if (channel.column_units.empty()) channel.column_units.assign(width, channel.units);
-  if (row_.size() < static_cast<std::size_t>(width)) row_.resize(width);  // sized once, here
+  if (!file_) channel.own_block.assign(ResultFile::block_rows * width, 0.0);  // sized once, here
   channel.statistics = RunningStatistics(width);
   // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
   // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
@@ -380,19 +381,18 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   }
   require_stages(system.data(), stages, t, evaluation);
   csv_row_.clear();
-  const bool in_window = compensators_.in_window(t);
   for (Channel& channel : channels_) {
-    // Filled in place, in the file's block of samples (or the scratch row): no copy.
-    double* row = file_ ? file_->sample_row(channel.series) : row_.data();
+    // Filled in place, in the file's block of samples (or the recorder's own): no copy.
+    double* row = file_ ? file_->sample_row(channel.series)
+                        : channel.own_block.data() + block_samples_ * std::max(channel.columns, 1);
     channel.fill(t, row);
-    channel.statistics.add(row);
-    if (in_window)
-      for (std::size_t c = 0; c < channel.response.size(); ++c) channel.response[c].add(row[c]);
     if (csv_) csv_row_.insert(csv_row_.end(), row, row + std::max(channel.columns, 1));
   }
+  if (window_first_row_ < 0 && compensators_.in_window(t)) window_first_row_ = block_samples_;
   if (file_) file_->end_sample();
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
+  if (++block_samples_ == static_cast<long>(ResultFile::block_rows)) add_block_statistics();
 
   if (records_energy_) {
     const double kinetic = energy_.kinetic, energy = energy_.total;
@@ -402,6 +402,27 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   }
   ++samples_;
+}
+
+void Recorder::add_block_statistics() {
+  // The block's samples are still where the channels wrote them: the file's block (which
+  // end_sample() has just written when the block is whole, and which the next sample
+  // overwrites) or the recorder's own. Column by column over a block instead of channel by
+  // channel every sample: the recording's share of the drilling run (docs/performance.md).
+  if (file_ && file_->buffered_samples() != (block_samples_ == static_cast<long>(ResultFile::block_rows)
+                                                 ? 0
+                                                 : static_cast<hsize_t>(block_samples_)))
+    throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+  for (Channel& channel : channels_) {
+    const long width = std::max(channel.columns, 1);
+    const double* rows = file_ ? file_->block(channel.series) : channel.own_block.data();
+    channel.statistics.add_rows(rows, block_samples_);
+    if (window_first_row_ >= 0)
+      for (std::size_t c = 0; c < channel.response.size(); ++c)
+        channel.response[c].add(rows + window_first_row_ * width + c, width, block_samples_ - window_first_row_);
+  }
+  block_samples_ = 0;
+  window_first_row_ = window_first_row_ >= 0 ? 0 : -1;  // the window, once begun, runs to the end
 }
 
 std::vector<std::string> Recorder::statistic_names(const Channel& channel) {
@@ -438,6 +459,7 @@ double Recorder::channel_maximum(const std::string& path) const {
 }
 
 void Recorder::finish() {
+  if (block_samples_ > 0) add_block_statistics();
   if (!file_) return;
   for (Channel& channel : channels_) {
     file_->set_attribute(channel.path, "minimum", channel.statistics.minimum());

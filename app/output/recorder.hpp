@@ -45,7 +45,8 @@ class Recorder {
   void finish();
 
   long samples() const { return samples_; }
-  /// Largest value recorded in column 0 of a channel, or NaN if there is no such channel.
+  /// Largest value recorded in column 0 of a channel, or NaN if there is no such channel
+  /// (after finish(): the statistics take the samples a block at a time).
   double channel_maximum(const std::string& path) const;
   /// Largest |E(t) - E(0)| / max(|E(0)|, max kinetic energy) seen so far (energy channel only).
   double relative_energy_drift() const { return energy_drift_; }
@@ -82,8 +83,13 @@ class Recorder {
     std::vector<stats::ResponseStatisticsAccumulator> response = {};
     /// Per column, the unit of the CSV header ("[m]"); default: `units` for every column.
     std::vector<std::string> column_units = {};
+    /// Without a result file: the block of samples the channel is written to.
+    std::vector<double> own_block = {};
   };
   void add(Channel channel);
+  /// The block's samples into every channel's statistics (a whole block, or what is
+  /// left at the end).
+  void add_block_statistics();
   /// The evaluation window's statistics of every column of `channel` as its attributes.
   void write_response_statistics(Channel& channel);
   /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
@@ -105,7 +111,9 @@ class Recorder {
   std::vector<Channel> channels_;
   bool needs_reactions_ = false;
   bool records_energy_ = false;  // output.energy: the energy channels and the drift summary
-  std::vector<double> row_, csv_row_;
+  std::vector<double> csv_row_;
+  long block_samples_ = 0;     // samples of the current block, not yet in the statistics
+  long window_first_row_ = -1;  // the block's first sample in the evaluation window (-1: none)
   stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
   std::int64_t window_samples_ = 0;             // samples expected in the evaluation window
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels

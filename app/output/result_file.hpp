@@ -92,6 +92,12 @@ class ResultFile {
   /// samples, sized once: a writer fills it in place (the recorder's channels do), then
   /// calls end_sample(). Valid until the next end_sample() or flush().
   double* sample_row(int series) { return series_[series].buffer.data() + buffered_samples_ * series_[series].width; }
+  /// The series' block of samples, row after row: the rows of the samples buffered
+  /// (buffered_samples()), and, right after end_sample() wrote a whole block, that block's
+  /// block_rows rows until the next sample is filled in.
+  const double* block(int series) const { return series_[series].buffer.data(); }
+  /// Whole samples in the block, not yet written.
+  hsize_t buffered_samples() const { return buffered_samples_; }
   /// Copies one row (max(columns, 1) values) into sample_row(series).
   void append(int series, const double* row);
   /// Ends one sample (a row filled in every series). The rows go to disk only here, a
