@@ -1,19 +1,31 @@
 #include "kernel/algorithms/kinematics.hpp"
 
 #include <stdexcept>
+#include <type_traits>
+
+#include "kernel/math/vector_libm.hpp"
 
 namespace heavesim {
 
 void update_positions(const Model& model, Data& data, const VectorX& q) {
   data.stages.begin_evaluation();
   data.q = q;  // same size: a copy, no allocation
+  // The revolute joints' cos and sin first, two joints at a time (libmvec): a sincos was a
+  // quarter of CRBA on a double pendulum.
+  vector_libm::cos_sin_at(q.data(), model.revolute_coordinates, data.revolute_cos.data(), data.revolute_sin.data());
   for (int i = 1; i < model.num_links(); ++i) {
     const Joint& joint = model.joints[i];
     const Link& link = model.links[i];
     std::visit(
         [&](const auto& type) {
+          using J = std::decay_t<decltype(type)>;
           const double* qi = q.data() + joint.q_index;
-          type.place(data.X_world_link[joint.parent] * joint.placement, qi, data.X_world_link[i]);
+          const Transform X_world_joint = data.X_world_link[joint.parent] * joint.placement;
+          if constexpr (std::is_same_v<J, RevoluteJoint>)
+            rotate_about_z(X_world_joint, data.revolute_cos[joint.q_index], data.revolute_sin[joint.q_index],
+                           data.X_world_link[i]);
+          else
+            type.place(X_world_joint, qi, data.X_world_link[i]);
           // The joint's nv columns of the column-major 6 x nv matrix start at 6 v_index; a
           // fixed joint (nv = 0) at the end of the tree has v_index = nv, one past the last
           // column, where it writes nothing (.col() would assert on that index).

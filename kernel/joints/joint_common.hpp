@@ -82,9 +82,9 @@ inline Vector3 quaternion_difference(const double* q0, const double* q1) {
   return rotation_vector(quaternion_from_wxyz(map4(q0)).conjugate() * quaternion_from_wxyz(map4(q1)));
 }
 
-/// X_out = X * Rz(angle), computed on the two columns Rz changes.
-HEAVESIM_INLINE void rotate_about_z(const Transform& X, double angle, Transform& X_out) {
-  const double c = std::cos(angle), s = std::sin(angle);
+/// X_out = X * Rz(angle) for c = cos(angle), s = sin(angle), computed on the two columns
+/// Rz changes.
+HEAVESIM_INLINE void rotate_about_z(const Transform& X, double c, double s, Transform& X_out) {
   const Matrix3& R = X.rotation();
   Matrix3& R_out = X_out.rotation();
   const Vector3 x = R.col(0), y = R.col(1);
@@ -92,6 +92,11 @@ HEAVESIM_INLINE void rotate_about_z(const Transform& X, double angle, Transform&
   R_out.col(1) = c * y - s * x;
   R_out.col(2) = R.col(2);
   X_out.translation() = X.translation();
+}
+
+/// X_out = X * Rz(angle).
+HEAVESIM_INLINE void rotate_about_z(const Transform& X, double angle, Transform& X_out) {
+  rotate_about_z(X, std::cos(angle), std::sin(angle), X_out);
 }
 
 /// S_world = X S for a general joint (column by column).

@@ -11,6 +11,7 @@
 // was tried for the Pareto fit's likelihood and was no faster than libm's.)
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #if defined(HEAVESIM_HAVE_LIBMVEC)
 #include <emmintrin.h>
@@ -48,6 +49,29 @@ inline void cos_sin_of_scaled(const double* w, double t, double* cosines, double
   for (; j < n; ++j) {
     cosines[j] = std::cos(w[j] * t);
     sines[j] = std::sin(w[j] * t);
+  }
+}
+
+/// cosines[i] = cos(x[i]) and sines[i] = sin(x[i]) for the indices i listed: two at a time
+/// through libmvec where it is linked (two cos and two sin in 10.5 ns against 18.3 ns for
+/// two scalar sincos, small arguments, this machine 2026-11-29), an odd last one by libm.
+inline void cos_sin_at(const double* x, const std::vector<int>& indices, double* cosines, double* sines) {
+  const std::size_t n = indices.size();
+  std::size_t k = 0;
+#if defined(HEAVESIM_HAVE_LIBMVEC)
+  for (; k + 2 <= n; k += 2) {
+    const int a = indices[k], b = indices[k + 1];
+    const __m128d angles = _mm_set_pd(x[b], x[a]);
+    alignas(16) double c[2], s[2];
+    _mm_store_pd(c, cos(angles));
+    _mm_store_pd(s, sin(angles));
+    cosines[a] = c[0], cosines[b] = c[1];
+    sines[a] = s[0], sines[b] = s[1];
+  }
+#endif
+  for (; k < n; ++k) {
+    cosines[indices[k]] = std::cos(x[indices[k]]);
+    sines[indices[k]] = std::sin(x[indices[k]]);
   }
 }
 }  // namespace heavesim::vector_libm

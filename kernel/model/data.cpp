@@ -9,6 +9,8 @@ Data::Data(const Model& model)
     : mass_matrix_cholesky(model.nv), kkt_solver(model.num_constraint_rows) {
   const int n = model.num_links();
   q = model.neutral_configuration();
+  revolute_cos = VectorX::Ones(model.nq);
+  revolute_sin = VectorX::Zero(model.nq);
   v = VectorX::Zero(model.nv);
   X_world_link.assign(n, Transform::Identity());
   motion_subspace_world = Matrix6X::Zero(6, model.nv);

@@ -66,6 +66,9 @@ struct Data {
   // expression constraints' Jacobian row df/dx reads them, so that constraint_jacobian
   // and its many callers need not pass q beside the Data computed from it.
   VectorX q;
+  // cos q and sin q of the revolute joints' coordinates (Model::revolute_coordinates), at
+  // those coordinates' indices (nq each; the other entries are unused).
+  VectorX revolute_cos, revolute_sin;
   AlignedVector<Transform> X_world_link;    // link frame in the world
   Matrix6X motion_subspace_world;           // 6 x nv: column k = spatial motion per unit v_k
   AlignedVector<Inertia> rigid_inertia_world;  // rigid-body inertia of each link

@@ -72,6 +72,9 @@ struct Model {
   // these paths (CRBA, the tree-sparse L^T L). Derived topology, like subtree_end: set
   // by ModelBuilder.
   std::vector<int> velocity_coordinate_parent;
+  // The configuration coordinates of the revolute joints, in link order: the position
+  // stage takes their cos and sin two at a time (update_positions). Set by ModelBuilder.
+  std::vector<int> revolute_coordinates;
   Vector3 gravity = Vector3(0.0, 0.0, -9.81);  // m/s^2, world frame
   int nq = 0;
   int nv = 0;

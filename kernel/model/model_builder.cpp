@@ -459,6 +459,9 @@ Model ModelBuilder::build() const {
         ancestor > 0 ? model.joints[ancestor].v_index + model.joints[ancestor].nv - 1 : -1;
     for (int c = joint.v_index + 1; c < joint.v_index + joint.nv; ++c) model.velocity_coordinate_parent[c] = c - 1;
   }
+  model.revolute_coordinates.clear();
+  for (int i = 1; i < model.num_links(); ++i)
+    if (std::holds_alternative<RevoluteJoint>(model.joints[i].type)) model.revolute_coordinates.push_back(model.joints[i].q_index);
   return model;
 }
 

@@ -45,5 +45,31 @@ TEST(Kinematics, DoublePendulumPlacementsAndVelocitiesMatchTheClosedForm) {
   EXPECT_LT((velocity2.linear() + velocity2.angular().cross(pin2) - pin2_velocity).norm(), 1e-14);
 }
 
+// The position stage takes the revolute joints' cos and sin two joints at a time
+// (libmvec) and an odd last one alone (libm): chains of one to five links, so that both
+// paths place links, against the closed form Ry(theta_1 + ... + theta_k) and the pins
+// summed link by link. Angles up to 39 rad (libmvec reduces them as libm does).
+TEST(Kinematics, PlanarChainsOfOneToFiveRevoluteJointsMatchTheClosedForm) {
+  for (int links = 1; links <= 5; ++links) {
+    std::vector<samples::PlanarLink> chain;
+    for (int k = 0; k < links; ++k) chain.push_back({0.5 + 0.25 * k, 1.0, 0.2, 0.1});
+    const Model model = samples::planar_chain(chain);
+    Data data(model);
+    VectorX q(links);
+    for (int k = 0; k < links; ++k) q[k] = (k % 2 ? -1.0 : 1.0) * (0.3 + 9.7 * k);
+    update_positions(model, data, q);
+    double theta = 0.0;
+    Vector3 pin = Vector3::Zero();  // the upper pin of link k, in the world
+    for (int k = 0; k < links; ++k) {
+      theta += q[k];
+      const Transform body = data.X_world_link[k + 1] * model.links[k + 1].X_link_body;
+      // Entries of order 1; angles up to 39 rad, sums up to 20 rad (round-off ~20 eps).
+      EXPECT_LT((body.rotation() - rotation_y(theta)).norm(), 1e-14) << links << " links, link " << k + 1;
+      EXPECT_LT((body.translation() - pin).norm(), 1e-14) << links << " links, link " << k + 1;
+      pin += -chain[k].length * Vector3(std::sin(theta), 0.0, std::cos(theta));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace heavesim
