@@ -11,8 +11,9 @@ namespace heavesim::sundials {
 namespace {
 
 struct DenseLu {
-  explicit DenseLu(Eigen::Index size) : factor(size) {}
+  explicit DenseLu(Eigen::Index size) : factor(size), right_hand_side(size) {}
   Eigen::PartialPivLU<MatrixX> factor;  // LU of the last matrix set up
+  VectorX right_hand_side;              // b's copy when x is b (Eigen's in-place permutation allocates)
   int last_flag = SUNLS_SUCCESS;
 };
 
@@ -45,7 +46,12 @@ int setup(SUNLinearSolver solver, SUNMatrix matrix) {
 int solve(SUNLinearSolver solver, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   DenseLu& lu = content(solver);
   Eigen::Map<VectorX> solution = map(x);
-  solution = lu.factor.solve(map(b));  // x and b may be the same vector: a permutation, then in-place triangles
+  if (N_VGetArrayPointer(x) == N_VGetArrayPointer(b)) {
+    lu.right_hand_side = map(b);
+    solution = lu.factor.solve(lu.right_hand_side);
+  } else {
+    solution = lu.factor.solve(map(b));
+  }
   return lu.last_flag = SUNLS_SUCCESS;
 }
 

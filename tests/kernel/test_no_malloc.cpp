@@ -3,6 +3,8 @@
 // no_malloc_config.hpp) if anything allocates while allocation is forbidden.
 #include <gtest/gtest.h>
 
+#include <sunmatrix/sunmatrix_dense.h>
+
 #include <cmath>
 
 #include <array>
@@ -216,7 +218,8 @@ TEST(NoMalloc, DaeNewtonMatrixDoesNotAllocate) {
 
 TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
   // IDA factors its Newton matrix with this solver at every matrix and solves with it at
-  // every Newton iteration; a size past Eigen's LU blocking (> 16).
+  // every Newton iteration; a size past Eigen's LU blocking (> 16). With x and b the same
+  // vector too: Eigen's in-place permutation allocates a mask (found here).
   const int n = 40;
   sundials::Context context;
   SUNMatrix matrix = SUNDenseMatrix(n, n, context);
