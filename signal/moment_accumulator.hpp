@@ -4,8 +4,8 @@
 // which carries M2, M3, M4 (sums of powers of deviations from the running mean) so that no
 // large sums of raw powers cancel. A block of samples is added by its own central sums
 // (two passes over the block) merged with the totals by Pébay's pairwise formulas
-// (SAND2008-6212, eq. 3.1): no division per sample and no chain from one sample to the
-// next, so the recorder's channels pay less for their moments (docs/performance.md).
+// (SAND2008-6212, eq. 3.1): no division per sample, so the recorder's channels pay less
+// for their moments (docs/performance.md).
 #include <cstddef>
 #include <cstdint>
 #include <limits>

@@ -344,6 +344,9 @@ void Recorder::record(double t, const VectorX& y) {
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
+  // A whole block (the last sample's end_sample() wrote it, and its rows are still in
+  // place) goes into the statistics before this sample overwrites its first row.
+  if (block_samples_ == static_cast<long>(ResultFile::block_rows)) add_block_statistics();
   MultibodySystem& system = *scene_.system;
   // Everything below reads the stages of this one evaluation; require_stages catches a
   // read after something evaluated the system again (a stale read).
@@ -390,24 +393,26 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   }
   if (window_first_row_ < 0 && compensators_.in_window(t)) window_first_row_ = block_samples_;
   if (file_) file_->end_sample();
+  // The sample is in the file: counted with the file's count, before anything else can
+  // fail (a CSV write).
+  ++block_samples_;
+  ++samples_;
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
-  if (++block_samples_ == static_cast<long>(ResultFile::block_rows)) add_block_statistics();
 
   if (records_energy_) {
     const double kinetic = energy_.kinetic, energy = energy_.total;
-    if (samples_ == 0) initial_energy_ = energy;
+    if (samples_ == 1) initial_energy_ = energy;
     max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
     const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
     if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   }
-  ++samples_;
 }
 
 void Recorder::add_block_statistics() {
   // The block's samples are still where the channels wrote them: the file's block (which
-  // end_sample() has just written when the block is whole, and which the next sample
-  // overwrites) or the recorder's own. Column by column over a block instead of channel by
+  // end_sample() wrote when the block became whole, and which the next sample overwrites)
+  // or the recorder's own. Column by column over a block instead of channel by
   // channel every sample: the recording's share of the drilling run (docs/performance.md).
   if (file_ && file_->buffered_samples() != (block_samples_ == static_cast<long>(ResultFile::block_rows)
                                                  ? 0

@@ -1,7 +1,7 @@
 #pragma once
 // Per-column minimum, maximum, mean and standard deviation of a recorded channel,
-// accumulated in one pass: sample by sample (Welford's update) or a block of samples at
-// a time (the block's own mean and sum of squared deviations, merged with the totals
+// accumulated as the samples come: sample by sample (Welford's update) or a block of
+// samples at a time (two passes over the block) (the block's own mean and sum of squared deviations, merged with the totals
 // by Chan, Golub & LeVeque's pairwise formula, "Algorithms for computing the sample
 // variance", The American Statistician 37, 1983).
 #include <Eigen/Core>

@@ -3,6 +3,7 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/LU>
+#include <memory>
 #include <new>
 
 #include "kernel/integrators/sundials_support.hpp"
@@ -75,9 +76,10 @@ int free_solver(SUNLinearSolver solver) {
 }  // namespace
 
 SUNLinearSolver make_dense_lu_linear_solver(SUNMatrix matrix, SUNContext context) {
+  auto lu = std::make_unique<DenseLu>(SUNDenseMatrix_Rows(matrix));
   SUNLinearSolver solver = SUNLinSolNewEmpty(context);
   if (!solver) throw std::bad_alloc();
-  solver->content = new DenseLu(SUNDenseMatrix_Rows(matrix));
+  solver->content = lu.release();
   solver->ops->gettype = direct;
   solver->ops->getid = custom;
   solver->ops->initialize = nothing_to_initialize;

@@ -9,6 +9,14 @@ Data::Data(const Model& model)
     : mass_matrix_cholesky(model.nv), kkt_solver(model.num_constraint_rows) {
   const int n = model.num_links();
   q = model.neutral_configuration();
+  // The position stage places revolute joints from Model::revolute_coordinates, which
+  // ModelBuilder sets: a model assembled otherwise would leave its revolute joints unturned.
+  std::vector<int> revolute;
+  for (int i = 1; i < n; ++i)
+    if (std::holds_alternative<RevoluteJoint>(model.joints[i].type)) revolute.push_back(model.joints[i].q_index);
+  if (revolute != model.revolute_coordinates)
+    throw std::logic_error("Data: Model::revolute_coordinates does not list the model's revolute joints "
+                           "(build models with ModelBuilder)");
   revolute_cos = VectorX::Ones(model.nq);
   revolute_sin = VectorX::Zero(model.nq);
   v = VectorX::Zero(model.nv);

@@ -131,6 +131,11 @@ TEST(WriteFailures, ACsvPastTheFileSizeLimitStopsTheRunAndTheResultFileStaysWhol
   EXPECT_EQ(file.shape("/time")[0], static_cast<hsize_t>(written));
   EXPECT_GT(written, 0);
   EXPECT_LT(written, 20001);
+  // ... and the statistics of the samples recorded were written (the recorder finished):
+  // the largest time is the last sample's (the recorder's and the file's blocks agree
+  // after a CSV failure inside a sample).
+  EXPECT_EQ(result.output.find("heavesim: error:"), std::string::npos) << result.output;
+  EXPECT_EQ(file.double_attribute("/time", "maximum"), file.read("/time").back());
   std::filesystem::remove(output);
   std::filesystem::remove_all(csv_directory);
 }

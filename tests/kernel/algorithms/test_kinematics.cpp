@@ -3,6 +3,8 @@
 // origin.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "kernel/algorithms/kinematics.hpp"
 #include "samples/planar_chains.hpp"
 #include "tests/kernel/rotation_formulas.hpp"
@@ -69,6 +71,16 @@ TEST(Kinematics, PlanarChainsOfOneToFiveRevoluteJointsMatchTheClosedForm) {
       pin += -chain[k].length * Vector3(std::sin(theta), 0.0, std::cos(theta));
     }
   }
+}
+
+// The position stage places revolute joints from Model::revolute_coordinates (ModelBuilder
+// sets it): a Data for a model whose list is missing is refused, rather than placing
+// those joints unturned.
+TEST(Kinematics, AModelWithoutItsRevoluteCoordinatesIsRefused) {
+  Model model = samples::planar_chain({{1.0, 1.0, 0.5, 0.1}, {1.0, 1.0, 0.5, 0.1}});
+  EXPECT_NO_THROW(Data{model});
+  model.revolute_coordinates.pop_back();
+  EXPECT_THROW(Data{model}, std::logic_error);
 }
 
 }  // namespace
