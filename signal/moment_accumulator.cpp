@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Core>
+
 namespace heavesim::stats {
 
 void MomentAccumulator::add(double x) {
@@ -22,24 +24,35 @@ void MomentAccumulator::add(double x) {
   m2_ += term;
 }
 
+namespace {
+
+/// A block's count, extremes, mean and central sums M2, M3, M4 (the mean first, then the
+/// deviations from it): Eigen reductions, vectorized over a contiguous block.
+struct BlockSums {
+  double count, minimum, maximum, mean, m2, m3, m4;
+};
+template <class Values>
+BlockSums block_sums(const Values& values) {
+  const double count = static_cast<double>(values.size()), mean = values.sum() / count;
+  const auto deviation = values - mean;
+  return {count,
+          values.minCoeff(),
+          values.maxCoeff(),
+          mean,
+          deviation.square().sum(),
+          (deviation.square() * deviation).sum(),
+          deviation.square().square().sum()};
+}
+
+}  // namespace
+
 void MomentAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t count) {
   if (count <= 0) return;
-  // The block's mean, then its central sums.
-  double sum = 0.0, block_minimum = minimum_, block_maximum = maximum_;
-  for (std::int64_t k = 0; k < count; ++k) {
-    const double value = x[k * stride];
-    sum += value;
-    block_minimum = std::min(block_minimum, value);
-    block_maximum = std::max(block_maximum, value);
-  }
-  const double n_b = static_cast<double>(count), mean_b = sum / n_b;
-  double m2_b = 0.0, m3_b = 0.0, m4_b = 0.0;
-  for (std::int64_t k = 0; k < count; ++k) {
-    const double d = x[k * stride] - mean_b, d2 = d * d;
-    m2_b += d2;
-    m3_b += d2 * d;
-    m4_b += d2 * d2;
-  }
+  const BlockSums block =
+      stride == 1 ? block_sums(Eigen::Map<const Eigen::ArrayXd>(x, count))
+                  : block_sums(Eigen::Map<const Eigen::ArrayXd, 0, Eigen::InnerStride<>>(x, count, Eigen::InnerStride<>(stride)));
+  const double n_b = block.count, mean_b = block.mean, m2_b = block.m2, m3_b = block.m3, m4_b = block.m4;
+  const double block_minimum = std::min(minimum_, block.minimum), block_maximum = std::max(maximum_, block.maximum);
   minimum_ = block_minimum;
   maximum_ = block_maximum;
   if (count_ == 0) {
