@@ -19,7 +19,9 @@
 // libsundials-dev installs, its main renamed) runs in the same process for the
 // side-by-side ratio of issue #3.
 //
-//   build/bench/heavesim_accuracy_vs_time [results.csv [problem [integrator]]]
+//   build/bench/heavesim_accuracy_vs_time [results.csv [problem [integrator [key=value ...]]]]
+// The key=value arguments are case overrides (as `heavesim run --set`) for every run, e.g.
+// solver.constraint_tolerance=1e-7 for the slider-crank's IDA at a looser loop closure.
 //   /usr/bin/python3 scripts/plot_accuracy_vs_time.py results.csv docs/figures/work_precision.png
 #include <time.h>
 #include <unistd.h>
@@ -231,9 +233,12 @@ struct Result {
   std::string note;  // why a run failed
 };
 
+std::vector<std::string> extra_overrides;  // key=value from the command line, for every run
+
 Result measure(const Problem& problem, const Method& method, double parameter) {
-  std::vector<std::string> overrides = {"solver.integrator=" + method.integrator, fmt::format("solver.t_end={}", problem.t_end),
-                                        fmt::format("output.interval={}", problem.output_interval)};
+  std::vector<std::string> overrides = extra_overrides;
+  overrides.insert(overrides.end(), {"solver.integrator=" + method.integrator, fmt::format("solver.t_end={}", problem.t_end),
+                                        fmt::format("output.interval={}", problem.output_interval)});
   if (!method.linear_solver.empty()) overrides.push_back("solver.linear_solver=" + method.linear_solver);
   if (method.fixed_step) {
     overrides.push_back(fmt::format("solver.step={}", parameter * problem.step_scale));
@@ -321,6 +326,7 @@ int main(int argc, char** argv) {
   using namespace heavesim::bench;
   const std::string csv_path = argc > 1 ? argv[1] : "accuracy_vs_time.csv";
   const std::string only_problem = argc > 2 ? argv[2] : "", only_integrator = argc > 3 ? argv[3] : "";
+  for (int a = 4; a < argc; ++a) extra_overrides.emplace_back(argv[a]);
   const std::vector<Problem> problems = {
       {"double_pendulum", "cases/validation/two_link_horizontal.yaml", 10.0, 0.1, pendulum_error(2), "rad"},
       {"three_link", "cases/validation/three_link.yaml", 5.0, 0.1, pendulum_error(3), "rad"},
@@ -374,6 +380,11 @@ int main(int argc, char** argv) {
       fmt::print("slider_crank at rtol = atol = 1e-6: heavesim IDA {:.3f} ms (error {:.2e}), idaSlCrank_dns {:.3f} ms "
                  "(error {:.2e}): ratio {:.2f}\n",
                  1e3 * ours.cpu, ours.error, 1e3 * example.cpu, example.error, ours.cpu / example.cpu);
+      const IntegratorStatistics& counts = ours.statistics;
+      fmt::print("heavesim IDA: {} steps, {} residuals, {} Newton iterations, {} convergence failures, {} error test "
+                 "failures, {} Newton matrices (the example prints its own at the end of {})\n",
+                 counts.steps, counts.rhs_evaluations, counts.nonlinear_iterations, counts.convergence_failures,
+                 counts.error_test_failures, counts.jacobian_evaluations, "/tmp/heavesim_idaSlCrank_dns.out");
     }
 #endif
     fmt::print("{}: fastest to error <= 1e-6: {} in {:.3f} ms CPU\n\n", problem.name, best.label, 1e3 * best.cpu);

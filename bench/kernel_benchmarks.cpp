@@ -117,7 +117,7 @@ void BM_SetUp(benchmark::State& state) {
   for (auto _ : state) {
     const Model model = samples::hanging_chain(masses);
     Data data(model);
-    benchmark::DoNotOptimize(data.mass_matrix.data());
+    benchmark::DoNotOptimize(data.q.data());
   }
   state.SetComplexityN(state.range(0));
   state.SetLabel("hanging chain, " + std::to_string(state.range(0)) + " links");

@@ -7,8 +7,14 @@ at the top-drive/string joint, joints/td_string/reaction_force z: docs/result-fi
 largest difference of every channel both files record.
 
   /usr/bin/python3 scripts/compare_runs.py reference.h5 run.h5
+  /usr/bin/python3 scripts/compare_runs.py --every-number before.h5 after.h5
 
 Reads the files with the heavesim package (docs/python.md): run it after the build.
+--every-number instead compares every floating-point dataset and attribute the two files
+share (the fields of compound attributes too, so every recorded statistic) and lists those
+that differ at all, with their largest difference: the check that a change meant to
+leave results alone (a faster path, a second thread) left them bitwise alone. The run's
+own wall time and real-time factor (/summary) always differ.
 """
 import argparse
 import pathlib
@@ -36,11 +42,50 @@ def describe(label, ref, run, units):
           f"(reference: std {np.std(ref):.4g} {units}, peak-to-peak {np.ptp(ref):.4g} {units})")
 
 
+def every_number(reference_path, run_path):
+    """Prints every floating-point dataset or attribute (compound fields included) that
+    differs between the two files, and how many there are."""
+    import h5py
+    differences = {}
+
+    def compare(name, x, y):
+        x, y = np.asarray(x), np.asarray(y)
+        if x.dtype.names and x.shape == y.shape and x.dtype.names == y.dtype.names:
+            for field in x.dtype.names:
+                compare(f"{name}.{field}", x[field], y[field])
+        elif x.dtype.kind == "f" and x.shape == y.shape and x.size:
+            same = (x == y) | (np.isnan(x) & np.isnan(y))
+            if not same.all():
+                differences[name] = np.nanmax(np.abs(x - y))
+        elif x.dtype.kind == "f" and x.shape != y.shape:
+            differences[name] = float("inf")
+
+    with h5py.File(reference_path, "r") as reference, h5py.File(run_path, "r") as run:
+        def visit(name, item):
+            if name not in run:
+                return
+            if isinstance(item, h5py.Dataset):
+                compare(name, item[()], run[name][()])
+            for key, value in item.attrs.items():
+                if key in run[name].attrs:
+                    compare(f"{name}@{key}", value, run[name].attrs[key])
+        visit("/", reference["/"])
+        reference.visititems(visit)
+    for name, difference in sorted(differences.items()):
+        print(f"{name}: max |difference| {difference:.3g}")
+    print(f"{len(differences)} floating-point datasets or attributes differ")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("reference", help="the reference result file (HDF5)")
     parser.add_argument("run", help="the result file compared with it")
+    parser.add_argument("--every-number", action="store_true",
+                        help="list every floating-point dataset or attribute that differs at all")
     args = parser.parse_args()
+    if args.every_number:
+        every_number(args.reference, args.run)
+        return
     with heavesim.open(args.reference) as reference, heavesim.open(args.run) as run:
         t_ref, t_run = reference.time, run.time
         n = min(len(t_ref), len(t_run))

@@ -128,7 +128,10 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   if (channel.column_units.empty()) channel.column_units.assign(width, channel.units);
-  if (!file_) channel.own_block.assign(ResultFile::block_rows * width, 0.0);  // sized once, here
+  if (!file_) {  // sized once, here
+    channel.own_block.assign(ResultFile::block_rows * width, 0.0);
+    channel.own_last_block.assign(ResultFile::block_rows * width, 0.0);
+  }
   channel.statistics = RunningStatistics(width);
   // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
   // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
@@ -344,9 +347,6 @@ void Recorder::record(double t, const VectorX& y) {
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
-  // A whole block (the last sample's end_sample() wrote it, and its rows are still in
-  // place) goes into the statistics before this sample overwrites its first row.
-  if (block_samples_ == static_cast<long>(ResultFile::block_rows)) add_block_statistics();
   MultibodySystem& system = *scene_.system;
   // Everything below reads the stages of this one evaluation; require_stages catches a
   // read after something evaluated the system again (a stale read).
@@ -392,11 +392,20 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     if (csv_) csv_row_.insert(csv_row_.end(), row, row + std::max(channel.columns, 1));
   }
   if (window_first_row_ < 0 && compensators_.in_window(t)) window_first_row_ = block_samples_;
+  // This sample ends a block: the file's end_sample() writes it and makes it the last
+  // whole block, in place of the one the block worker may still be reading.
+  const bool ends_block = block_samples_ + 1 == static_cast<long>(ResultFile::block_rows);
+  // The file ends its block when the recorder does (its end_sample() swaps the last whole
+  // block, which the statistics worker reads): a count that drifted would race.
+  if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
+    throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+  if (ends_block) block_worker_.wait();
   if (file_) file_->end_sample();
   // The sample is in the file: counted with the file's count, before anything else can
   // fail (a CSV write).
   ++block_samples_;
   ++samples_;
+  if (ends_block) hand_over_block();
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
 
@@ -409,25 +418,28 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   }
 }
 
-void Recorder::add_block_statistics() {
-  // The block's samples are still where the channels wrote them: the file's block (which
-  // end_sample() wrote when the block became whole, and which the next sample overwrites)
-  // or the recorder's own. Column by column over a block instead of channel by
-  // channel every sample: the recording's share of the drilling run (docs/performance.md).
-  if (file_ && file_->buffered_samples() != (block_samples_ == static_cast<long>(ResultFile::block_rows)
-                                                 ? 0
-                                                 : static_cast<hsize_t>(block_samples_)))
-    throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
-  for (Channel& channel : channels_) {
-    const long width = std::max(channel.columns, 1);
-    const double* rows = file_ ? file_->block(channel.series) : channel.own_block.data();
-    channel.statistics.add_rows(rows, block_samples_);
-    if (window_first_row_ >= 0)
-      for (std::size_t c = 0; c < channel.response.size(); ++c)
-        channel.response[c].add(rows + window_first_row_ * width + c, width, block_samples_ - window_first_row_);
-  }
+void Recorder::hand_over_block() {
+  if (!file_)
+    for (Channel& channel : channels_) channel.own_block.swap(channel.own_last_block);
+  handed_window_first_row_ = window_first_row_;
   block_samples_ = 0;
   window_first_row_ = window_first_row_ >= 0 ? 0 : -1;  // the window, once begun, runs to the end
+  block_worker_.start();
+}
+
+void Recorder::add_block_statistics(bool last_whole_block, long rows, long window_first_row) {
+  // Column by column over a block instead of channel by channel every sample: the
+  // recording's share of the drilling run (docs/performance.md). The rows are where the
+  // channels wrote them, in the file's blocks or the recorder's own.
+  for (Channel& channel : channels_) {
+    const long width = std::max(channel.columns, 1);
+    const double* block = file_ ? (last_whole_block ? file_->last_block(channel.series) : file_->block(channel.series))
+                                : (last_whole_block ? channel.own_last_block.data() : channel.own_block.data());
+    channel.statistics.add_rows(block, rows);
+    if (window_first_row >= 0)
+      for (std::size_t c = 0; c < channel.response.size(); ++c)
+        channel.response[c].add(block + window_first_row * width + c, width, rows - window_first_row);
+  }
 }
 
 std::vector<std::string> Recorder::statistic_names(const Channel& channel) {
@@ -464,7 +476,14 @@ double Recorder::channel_maximum(const std::string& path) const {
 }
 
 void Recorder::finish() {
-  if (block_samples_ > 0) add_block_statistics();
+  block_worker_.wait();
+  if (block_samples_ > 0) {
+    // The block being built, as far as it goes: the file holds the same samples.
+    if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
+      throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+    add_block_statistics(false, block_samples_, window_first_row_);
+    block_samples_ = 0;
+  }
   if (!file_) return;
   for (Channel& channel : channels_) {
     file_->set_attribute(channel.path, "minimum", channel.statistics.minimum());

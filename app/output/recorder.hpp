@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "app/case/case_definition.hpp"
+#include "app/output/background_worker.hpp"
 #include "app/output/compensator_summary.hpp"
 #include "app/output/csv_writer.hpp"
 #include "app/output/result_file.hpp"
@@ -83,13 +84,17 @@ class Recorder {
     std::vector<stats::ResponseStatisticsAccumulator> response = {};
     /// Per column, the unit of the CSV header ("[m]"); default: `units` for every column.
     std::vector<std::string> column_units = {};
-    /// Without a result file: the block of samples the channel is written to.
+    /// Without a result file: the block of samples the channel is written to, and the
+    /// last whole one (they trade places, as the file's do).
     std::vector<double> own_block = {};
+    std::vector<double> own_last_block = {};
   };
   void add(Channel channel);
-  /// The block's samples into every channel's statistics (a whole block, or what is
-  /// left at the end).
-  void add_block_statistics();
+  /// `rows` samples of a block into every channel's statistics: the last whole block
+  /// (on the block worker's thread) or, at the end, the block being built.
+  void add_block_statistics(bool last_whole_block, long rows, long window_first_row);
+  /// The whole block just ended goes to the block worker; the next block starts.
+  void hand_over_block();
   /// The evaluation window's statistics of every column of `channel` as its attributes.
   void write_response_statistics(Channel& channel);
   /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
@@ -128,6 +133,15 @@ class Recorder {
   std::vector<JointReaction> reactions_;  // of reaction_joints_, at the sample being recorded
   std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample
   CompensatorSummary compensators_;
+  // The last whole block's statistics, computed on a second thread while the next block's
+  // samples are recorded (docs/performance.md, "Recording on two cores"). While it runs it
+  // owns the channels' statistics and response accumulators and reads the last whole
+  // blocks; this thread touches neither until block_worker_.wait(). Declared last: it is
+  // ended first, before the channels it reads go.
+  long handed_window_first_row_ = -1;  // the handed-over block's window_first_row_
+  BackgroundWorker block_worker_{[this] {
+    add_block_statistics(true, static_cast<long>(ResultFile::block_rows), handed_window_first_row_);
+  }};
 };
 
 }  // namespace heavesim

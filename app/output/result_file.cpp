@@ -67,6 +67,11 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
 }
 
 ResultFile::~ResultFile() {
+  try {
+    settle();
+  } catch (...) {
+    // The block writer's failure is recorded in failure_: the file is abandoned below.
+  }
   if (published_ && !closed_ && failure_.empty()) {
     try {
       close();
@@ -142,6 +147,7 @@ void ResultFile::write_attribute(const std::string& object_path, const std::stri
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
+  settle();
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
   const char* text = value.c_str();
@@ -153,12 +159,14 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, long value) {
+  settle();
   const Handle space(H5Screate(H5S_SCALAR));
   write_attribute(object_path, name, H5T_NATIVE_LONG, space.get(), &value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name,
                                const std::vector<double>& values) {
+  settle();
   const hsize_t size = values.size();
   const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
   write_attribute(object_path, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
@@ -166,6 +174,7 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 
 void ResultFile::set_record_attribute(const std::string& object_path, const std::string& name,
                                      const std::vector<std::string>& fields, const std::vector<double>& values) {
+  settle();
   const Handle type(H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double)));
   check(type.valid(), "cannot write result file");
   for (std::size_t f = 0; f < fields.size(); ++f)
@@ -176,6 +185,7 @@ void ResultFile::set_record_attribute(const std::string& object_path, const std:
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
+  settle();
   check_usable();
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
@@ -191,6 +201,7 @@ void ResultFile::write_text(const std::string& dataset_path, const std::string& 
 
 int ResultFile::add_series(const std::string& dataset_path, int columns, const std::string& units,
                            const std::string& description) {
+  settle();
   check_usable();
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t initial[2] = {reserved_samples_, static_cast<hsize_t>(columns)};
@@ -214,6 +225,7 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.width = static_cast<hsize_t>(std::max(columns, 1));
   series.extent = reserved_samples_;
   series.buffer.assign(block_rows * series.width, 0.0);
+  series.last_block.assign(block_rows * series.width, 0.0);
   series_.push_back(std::move(series));
   set_attribute(dataset_path, "units", units);
   set_attribute(dataset_path, "description", description);
@@ -230,16 +242,38 @@ void ResultFile::append(int series_id, const double* row) {
 
 void ResultFile::end_sample() {
   if (++buffered_samples_ < block_rows) return;
-  write_block(block_rows);
+  // The block goes to the block writer, which writes it while the next one is filled;
+  // the one before must be on disk first (and a failure of it is thrown here).
+  settle();
+  check_usable();
+  bool grows = false;
+  for (Series& series : series_) {
+    series.buffer.swap(series.last_block);
+    grows = grows || series.extent < rows_on_disk_ + block_rows;
+  }
+  handed_first_row_ = rows_on_disk_;
+  rows_on_disk_ += block_rows;
+  buffered_samples_ = 0;
+  block_writer_.start();
   const double since_commit =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - last_commit_).count();
   // The first block at once: a reader (and a run stopped early) has samples from the start.
-  if (samples_written_ == 0 || extended_since_commit_ || since_commit >= commit_interval_s) commit();
+  // A series that grows is a structural change, committed at once. commit() waits for the
+  // block writer first.
+  if (samples_written_ == 0 || grows || since_commit >= commit_interval_s) commit();
 }
 
-bool ResultFile::write_rows(Series& series, hsize_t rows) {
+void ResultFile::write_last_blocks() {
+  // Debian's HDF5 is the thread-safe build: every thread has its own error stack, printed
+  // by default. A failure is reported by the return codes, as on the caller's thread.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  for (Series& series : series_)
+    extended_since_commit_ =
+        write_rows(series, series.last_block.data(), handed_first_row_, block_rows) || extended_since_commit_;
+}
+
+bool ResultFile::write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows) {
   const int rank = series.columns == 0 ? 1 : 2;
-  const hsize_t first = rows_on_disk_;
   bool extended = false;
   if (first + rows > series.extent) {
     const hsize_t new_size[2] = {first + rows, static_cast<hsize_t>(series.columns)};
@@ -255,14 +289,15 @@ bool ResultFile::write_rows(Series& series, hsize_t rows) {
             H5Sselect_hyperslab(file_space.get(), H5S_SELECT_SET, start, nullptr, count, nullptr) >= 0,
         "cannot write result file");
   check(H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
-                 series.buffer.data()) >= 0,
+                 rows_data) >= 0,
         "cannot write result file");
   return extended;
 }
 
 void ResultFile::write_block(hsize_t rows) {
+  settle();
   for (Series& series : series_) {
-    extended_since_commit_ = write_rows(series, rows) || extended_since_commit_;
+    extended_since_commit_ = write_rows(series, series.buffer.data(), rows_on_disk_, rows) || extended_since_commit_;
     // The row of a sample still being built (a flush between its appends) leads the next block.
     if (rows < block_rows)
       std::copy_n(series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * series.width), series.width,
@@ -273,6 +308,7 @@ void ResultFile::write_block(hsize_t rows) {
 }
 
 void ResultFile::commit() {
+  settle();  // the rows counted below are on disk
   if (rows_on_disk_ != samples_written_) {
     if (extended_since_commit_) flush_file();
     set_attribute("/", samples_written_name, static_cast<long>(rows_on_disk_));
@@ -287,6 +323,7 @@ void ResultFile::commit() {
 void ResultFile::flush_file() { check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "cannot write result file"); }
 
 void ResultFile::flush() {
+  settle();
   check_usable();
   if (buffered_samples_ > 0) write_block(buffered_samples_);
   commit();
@@ -305,7 +342,7 @@ void ResultFile::publish() {
 void ResultFile::close() {
   if (closed_) return;
   try {
-    flush();
+    flush();  // waits for the block writer first
     // Room the end of the run did not take (no failure text, a short summary).
     for (const char* object : {"/", "/summary"}) {
       const Handle room_holder = open_object(object);

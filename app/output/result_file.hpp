@@ -47,6 +47,7 @@
 #include <string>
 #include <vector>
 
+#include "app/output/background_worker.hpp"
 #include "app/output/output_error.hpp"
 #include "io/hdf5/hdf5_handle.hpp"
 
@@ -92,16 +93,20 @@ class ResultFile {
   /// samples, sized once: a writer fills it in place (the recorder's channels do), then
   /// calls end_sample(). Valid until the next end_sample() or flush().
   double* sample_row(int series) { return series_[series].buffer.data() + buffered_samples_ * series_[series].width; }
-  /// The series' block of samples, row after row: the rows of the samples buffered
-  /// (buffered_samples()), and, right after end_sample() wrote a whole block, that block's
-  /// block_rows rows until the next sample is filled in.
+  /// The series' block of samples being built, row after row: the rows of the samples
+  /// buffered (buffered_samples()).
   const double* block(int series) const { return series_[series].buffer.data(); }
+  /// The series' last whole block (block_rows rows), which end_sample() handed to the
+  /// block writer. It stays untouched, and may be read on another thread, until
+  /// end_sample() ends the next whole block: the two blocks trade places then (no copy).
+  const double* last_block(int series) const { return series_[series].last_block.data(); }
   /// Whole samples in the block, not yet written.
   hsize_t buffered_samples() const { return buffered_samples_; }
   /// Copies one row (max(columns, 1) values) into sample_row(series).
   void append(int series, const double* row);
   /// Ends one sample (a row filled in every series). The rows go to disk only here, a
-  /// block of `block_rows` samples at a time, one write a series; `samples_written` is
+  /// block of `block_rows` samples at a time, one write a series, on a second thread
+  /// (the block writer) while the next block is filled; `samples_written` is
   /// raised (a commit: the count, then a file flush) after a block only when it is the
   /// first, when `commit_interval_s` of wall time has passed since the last commit, or
   /// when a series had to be extended (a structural change, committed at once): the flush, not the data, is
@@ -124,7 +129,8 @@ class ResultFile {
     int columns = 0;
     hsize_t width = 1;   // values a row: max(columns, 1)
     hsize_t extent = 0;  // rows the dataset has (reserved or grown)
-    std::vector<double> buffer;  // block_rows rows, row-major, sized once
+    std::vector<double> buffer;      // block_rows rows, row-major, sized once
+    std::vector<double> last_block;  // the last whole block written, sized once
   };
   /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
   hdf5::Handle open_object(const std::string& object_path);
@@ -132,9 +138,15 @@ class ResultFile {
   /// the same type and shape (no allocation), else creating it.
   void write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
                        const void* data);
-  /// Rows [rows_on_disk_, rows_on_disk_ + rows) of a series from its buffer; extends the
-  /// dataset if needed (and says so).
-  bool write_rows(Series& series, hsize_t rows);
+  /// Rows [first, first + rows) of a series from `rows_data`; extends the dataset if
+  /// needed (and says so).
+  bool write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows);
+  /// The block writer's job: every series' last whole block at handed_first_row_.
+  void write_last_blocks();
+  /// Waits until the block writer is idle (throwing its failure): every public method
+  /// that calls HDF5 does so first, so that the file's HDF5 objects are never used from
+  /// two threads at once (and the serial build of HDF5 could serve as well).
+  void settle() { block_writer_.wait(); }
   /// The first `rows` buffered samples of every series to disk; a sample still being
   /// built moves to the start of the block.
   void write_block(hsize_t rows);
@@ -156,13 +168,19 @@ class ResultFile {
   hdf5::Handle file_;
   std::vector<Series> series_;
   hsize_t buffered_samples_ = 0;  // whole samples in the block (not yet on disk)
-  hsize_t rows_on_disk_ = 0;      // rows written to every series (>= samples_written_)
+  hsize_t rows_on_disk_ = 0;      // rows written, or handed to the block writer, in every series (>= samples_written_)
+  hsize_t handed_first_row_ = 0;  // the first row of the block in the block writer's hands
   hsize_t samples_written_ = 0;   // rows committed (the root attribute)
   bool extended_since_commit_ = false;
   std::chrono::steady_clock::time_point last_commit_ = std::chrono::steady_clock::now();
   bool published_ = false, closed_ = false;
   std::string failure_;  // the OutputError's message once a write has failed
   std::string failure_cause_;
+  // Writes the last whole blocks (docs/performance.md, "Recording on two cores"). While it
+  // runs it is the only HDF5 caller: it owns the datasets' extents, extended_since_commit_
+  // and the failure fields, and this thread waits (settle) before any HDF5 call. Declared
+  // last: it ends first.
+  BackgroundWorker block_writer_{[this] { write_last_blocks(); }};
 };
 
 }  // namespace heavesim

@@ -105,6 +105,8 @@ Force force_change(const Model& model, const Data& data, int k, const Motion* sc
 void inverse_dynamics_derivatives(const Model& model, Data& data, const VectorX& q, const VectorX& v,
                                   const VectorX& qdd, ExternalForces external_forces_world) {
   rnea(model, data, q, v, qdd, external_forces_world);
+  size_dense_matrix(data.dtau_dq, model.nv, model.nv);
+  size_dense_matrix(data.dtau_dv, model.nv, model.nv);
   const Motion gravity_acceleration(Vector3::Zero(), model.gravity);
 
   for (int j = 1; j < model.num_links(); ++j) {

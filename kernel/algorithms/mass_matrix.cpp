@@ -8,7 +8,8 @@ namespace heavesim {
 // coordinate k on its path to the root (Model::velocity_coordinate_parent), so
 // M(k, c) = s_k . F_c needs no transform
 // (Featherstone 2008, table 6.2 with the transforms gone). Only the entries on those
-// paths are written; the others are zero from the Data's construction and stay so.
+// paths are written; the others are zero from the matrix's sizing at the first call and
+// stay so.
 // The rigid part of Ic adds as InertiaAboutOrigin (13 numbers); a 6x6 added part is
 // carried only through subtrees that have one.
 const MatrixX& mass_matrix(const Model& model, Data& data) {
@@ -16,6 +17,7 @@ const MatrixX& mass_matrix(const Model& model, Data& data) {
   const std::vector<int>& coordinate_parent = model.velocity_coordinate_parent;
   const Matrix6X& S = data.motion_subspace_world;
   MatrixX& M = data.mass_matrix;
+  size_dense_matrix(M, model.nv, model.nv);
   auto& rigid = data.composite_rigid_inertia_world;
   auto& added = data.composite_added_inertia_world;
   auto& has_added = data.composite_has_added_inertia;
@@ -52,6 +54,7 @@ const MatrixX& crba(const Model& model, Data& data, const VectorX& q) {
 
 const Eigen::LLT<MatrixX>& factorize_mass_matrix(const Model& model, Data& data) {
   if (!(data.stages.current & StageMarker::mass_factor)) {
+    if (data.mass_matrix_cholesky.rows() != model.nv) data.mass_matrix_cholesky = SizedCholesky(model.nv);
     data.mass_matrix_cholesky.compute(mass_matrix(model, data));
     data.stages.current |= StageMarker::mass_factor;
   }

@@ -6,7 +6,7 @@
 namespace heavesim {
 
 Data::Data(const Model& model)
-    : mass_matrix_cholesky(model.nv), kkt_solver(model.num_constraint_rows) {
+    : kkt_solver(model.num_constraint_rows) {
   const int n = model.num_links();
   q = model.neutral_configuration();
   // The position stage places revolute joints from Model::revolute_coordinates, which
@@ -34,7 +34,6 @@ Data::Data(const Model& model)
   composite_rigid_inertia_world.assign(n, InertiaAboutOrigin());
   composite_added_inertia_world.assign(n, Matrix6::Zero());
   composite_has_added_inertia.assign(n, 0);
-  mass_matrix = MatrixX::Zero(model.nv, model.nv);
   const int m = model.num_constraint_rows;
   constraint_residual = VectorX::Zero(m);
   constraint_velocity_target = VectorX::Zero(m);
@@ -51,8 +50,6 @@ Data::Data(const Model& model)
   kkt_free_qdd = VectorX::Zero(model.nv);
   projection_step = VectorX::Zero(model.nv);
   projection_configuration = VectorX::Zero(model.nq);
-  dtau_dq = MatrixX::Zero(model.nv, model.nv);
-  dtau_dv = MatrixX::Zero(model.nv, model.nv);
   derivative_velocity.assign(n, Motion::Zero());
   derivative_acceleration.assign(n, Motion::Zero());
   derivative_force.assign(n, Force::Zero());

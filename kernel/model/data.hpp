@@ -1,6 +1,10 @@
 #pragma once
 // Workspace of the algorithms for one Model (Pinocchio's Data): every buffer is sized
-// once here, so no algorithm allocates. One Model can serve many Data.
+// once, so no algorithm allocates after its first call. One Model can serve many Data.
+// The O(n) buffers are sized here; the dense nv x nv matrices (mass_matrix and its
+// factor, dtau_dq, dtau_dv) by the first call of the algorithm that fills them
+// (size_dense_matrix): a case that never forms them does not pay n^2 memory and time
+// for them, and making a Data is O(n) (docs/performance.md, "Set-up").
 //
 // All spatial quantities are in world coordinates about the world origin
 // ("absolute" spatial vectors, Featherstone 2008 sec. 2.8 / Pinocchio's WORLD
@@ -93,8 +97,9 @@ struct Data {
   AlignedVector<InertiaAboutOrigin> composite_rigid_inertia_world;
   AlignedVector<Matrix6> composite_added_inertia_world;
   std::vector<unsigned char> composite_has_added_inertia;
-  MatrixX mass_matrix;                            // nv x nv, both triangles filled
-  SizedCholesky mass_matrix_cholesky;           // of mass_matrix; current with StageMarker::mass_factor
+  MatrixX mass_matrix;                            // nv x nv, both triangles filled; 0 x 0 until the first CRBA
+  SizedCholesky mass_matrix_cholesky;           // of mass_matrix; current with StageMarker::mass_factor;
+                                                // sized by the first factorize_mass_matrix
 
   // --- constraints (closed loops); sized m = model.num_constraint_rows ---
   VectorX constraint_residual;      // Phi (m)
@@ -121,7 +126,7 @@ struct Data {
 
   // --- derivatives of inverse dynamics ---
   MatrixX dtau_dq;                                // nv x nv: d tau / d q along each joint's tangent
-  MatrixX dtau_dv;                                // nv x nv: d tau / d v
+  MatrixX dtau_dv;                                // nv x nv: d tau / d v (both 0 x 0 until the first call)
   AlignedVector<Motion> derivative_velocity;      // workspace: d v_k for the current column
   AlignedVector<Motion> derivative_acceleration;  // workspace: d a_k
   AlignedVector<Force> derivative_force;          // workspace: d f_k, then subtree sums d F_k
@@ -139,5 +144,12 @@ struct Data {
 /// time t [s]: a read of stages that a later evaluation overwrote, or that were never
 /// computed. A few integer and double comparisons: cheap enough to stay on.
 void require_stages(const Data& data, unsigned required, double t, long evaluation);
+
+/// Gives a dense workspace its size, zeroed, on the algorithm's first call; afterwards a
+/// size check only (no allocation: the hot path's rule holds from the second call on,
+/// and every system form evaluates once before its first step).
+inline void size_dense_matrix(MatrixX& matrix, Eigen::Index rows, Eigen::Index cols) {
+  if (matrix.rows() != rows || matrix.cols() != cols) matrix.setZero(rows, cols);
+}
 
 }  // namespace heavesim

@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <map>
+#include <unordered_map>
 #include <sstream>
 #include <tuple>
 
@@ -340,7 +341,8 @@ void ModelBuilder::add_constraints(Model& model) const {
 }
 
 Model ModelBuilder::build() const {
-  std::map<std::string, int> body_index;
+  // Hash maps: the build is O(n) in the number of bodies (docs/performance.md, "Set-up").
+  std::unordered_map<std::string, int> body_index;
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
     const BodyDefinition& body = bodies_[b];
     if (body.name == ground_name) throw body_error(body.name, "name", "'ground'", "a name other than 'ground'");
@@ -349,9 +351,9 @@ Model ModelBuilder::build() const {
     check_body(body);
   }
 
-  std::map<std::string, int> joint_of_child;
-  std::map<std::string, std::vector<int>> joints_of_parent;
-  std::map<std::string, int> joint_names;
+  std::unordered_map<std::string, int> joint_of_child;
+  std::unordered_map<std::string, std::vector<int>> joints_of_parent;
+  std::unordered_map<std::string, int> joint_names;
   for (int j = 0; j < static_cast<int>(joints_.size()); ++j) {
     const JointDefinition& joint = joints_[j];
     if (!joint_names.emplace(joint.name, j).second)
@@ -382,6 +384,8 @@ Model ModelBuilder::build() const {
 
   Model model;
   model.gravity = gravity_;
+  model.links.reserve(bodies_.size() + 1);
+  model.joints.reserve(bodies_.size() + 1);
   Link ground;
   ground.name = ground_name;
   model.links.push_back(ground);
