@@ -395,10 +395,7 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   // This sample ends a block: the file's end_sample() writes it and makes it the last
   // whole block, in place of the one the block worker may still be reading.
   const bool ends_block = block_samples_ + 1 == static_cast<long>(ResultFile::block_rows);
-  // The file ends its block when the recorder does (its end_sample() swaps the last whole
-  // block, which the statistics worker reads): a count that drifted would race.
-  if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
-    throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+  require_file_block_agrees();
   if (ends_block) block_worker_.wait();
   if (file_) file_->end_sample();
   // The sample is in the file: counted with the file's count, before anything else can
@@ -416,6 +413,14 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);
     if (scale > 0.0) energy_drift_ = std::max(energy_drift_, std::abs(energy - initial_energy_) / scale);
   }
+}
+
+void Recorder::require_file_block_agrees() const {
+  // The file ends its block when the recorder does (its end_sample() swaps the last whole
+  // block, which the statistics worker reads): a count that drifted would race, and the
+  // block being built would not be the samples the recorder counts.
+  if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
+    throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
 }
 
 void Recorder::hand_over_block() {
@@ -479,8 +484,7 @@ void Recorder::finish() {
   block_worker_.wait();
   if (block_samples_ > 0) {
     // The block being built, as far as it goes: the file holds the same samples.
-    if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
-      throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+    require_file_block_agrees();
     add_block_statistics(false, block_samples_, window_first_row_);
     block_samples_ = 0;
   }

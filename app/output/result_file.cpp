@@ -246,11 +246,8 @@ void ResultFile::end_sample() {
   // the one before must be on disk first (and a failure of it is thrown here).
   settle();
   check_usable();
-  bool grows = false;
-  for (Series& series : series_) {
-    series.buffer.swap(series.last_block);
-    grows = grows || series.extent < rows_on_disk_ + block_rows;
-  }
+  extend_series(rows_on_disk_ + block_rows);  // structural changes stay on this thread
+  for (Series& series : series_) series.buffer.swap(series.last_block);
   handed_first_row_ = rows_on_disk_;
   rows_on_disk_ += block_rows;
   buffered_samples_ = 0;
@@ -258,29 +255,29 @@ void ResultFile::end_sample() {
   const double since_commit =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - last_commit_).count();
   // The first block at once: a reader (and a run stopped early) has samples from the start.
-  // A series that grows is a structural change, committed at once. commit() waits for the
-  // block writer first.
-  if (samples_written_ == 0 || grows || since_commit >= commit_interval_s) commit();
+  // commit() waits for the block writer first.
+  if (samples_written_ == 0 || extended_since_commit_ || since_commit >= commit_interval_s) commit();
 }
 
 void ResultFile::write_last_blocks() {
   // Debian's HDF5 is the thread-safe build: every thread has its own error stack, printed
   // by default. A failure is reported by the return codes, as on the caller's thread.
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-  for (Series& series : series_)
-    extended_since_commit_ =
-        write_rows(series, series.last_block.data(), handed_first_row_, block_rows) || extended_since_commit_;
+  for (Series& series : series_) write_rows(series, series.last_block.data(), handed_first_row_, block_rows);
 }
 
-bool ResultFile::write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows) {
-  const int rank = series.columns == 0 ? 1 : 2;
-  bool extended = false;
-  if (first + rows > series.extent) {
-    const hsize_t new_size[2] = {first + rows, static_cast<hsize_t>(series.columns)};
+void ResultFile::extend_series(hsize_t rows) {
+  for (Series& series : series_) {
+    if (series.extent >= rows) continue;
+    const hsize_t new_size[2] = {rows, static_cast<hsize_t>(series.columns)};
     check(H5Dset_extent(series.dataset.get(), new_size) >= 0, "cannot write result file");
-    series.extent = first + rows;
-    extended = true;
+    series.extent = rows;
+    extended_since_commit_ = true;
   }
+}
+
+void ResultFile::write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows) {
+  const int rank = series.columns == 0 ? 1 : 2;
   const Handle file_space(H5Dget_space(series.dataset.get()));
   const hsize_t start[2] = {first, 0};
   const hsize_t count[2] = {rows, static_cast<hsize_t>(series.columns)};
@@ -291,13 +288,13 @@ bool ResultFile::write_rows(Series& series, const double* rows_data, hsize_t fir
   check(H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memory_space.get(), file_space.get(), H5P_DEFAULT,
                  rows_data) >= 0,
         "cannot write result file");
-  return extended;
 }
 
 void ResultFile::write_block(hsize_t rows) {
   settle();
+  extend_series(rows_on_disk_ + rows);
   for (Series& series : series_) {
-    extended_since_commit_ = write_rows(series, series.buffer.data(), rows_on_disk_, rows) || extended_since_commit_;
+    write_rows(series, series.buffer.data(), rows_on_disk_, rows);
     // The row of a sample still being built (a flush between its appends) leads the next block.
     if (rows < block_rows)
       std::copy_n(series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * series.width), series.width,

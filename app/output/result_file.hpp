@@ -138,9 +138,10 @@ class ResultFile {
   /// the same type and shape (no allocation), else creating it.
   void write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
                        const void* data);
-  /// Rows [first, first + rows) of a series from `rows_data`; extends the dataset if
-  /// needed (and says so).
-  bool write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows);
+  /// Every series at least `rows` long (extended_since_commit_ when one grows).
+  void extend_series(hsize_t rows);
+  /// Rows [first, first + rows) of a series from `rows_data` (the dataset is long enough).
+  void write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows);
   /// The block writer's job: every series' last whole block at handed_first_row_.
   void write_last_blocks();
   /// Waits until the block writer is idle (throwing its failure): every public method
@@ -176,10 +177,10 @@ class ResultFile {
   bool published_ = false, closed_ = false;
   std::string failure_;  // the OutputError's message once a write has failed
   std::string failure_cause_;
-  // Writes the last whole blocks (docs/performance.md, "Recording on two cores"). While it
-  // runs it is the only HDF5 caller: it owns the datasets' extents, extended_since_commit_
-  // and the failure fields, and this thread waits (settle) before any HDF5 call. Declared
-  // last: it ends first.
+  // Writes the last whole blocks (docs/performance.md, "Recording on two cores"), data only:
+  // the datasets are extended before a block is handed over. While it runs it is the only
+  // HDF5 caller and owns the failure fields; this thread waits (settle) before any HDF5
+  // call. Declared last: it ends first.
   BackgroundWorker block_writer_{[this] { write_last_blocks(); }};
 };
 

@@ -12,12 +12,17 @@ namespace heavesim {
 // stay so.
 // The rigid part of Ic adds as InertiaAboutOrigin (13 numbers); a 6x6 added part is
 // carried only through subtrees that have one.
+void size_mass_matrix(const Model& model, Data& data) {
+  size_dense_matrix(data.mass_matrix, model.nv, model.nv);
+  if (data.mass_matrix_cholesky.rows() != model.nv) data.mass_matrix_cholesky = SizedCholesky(model.nv);
+}
+
 const MatrixX& mass_matrix(const Model& model, Data& data) {
   const int n = model.num_links();
   const std::vector<int>& coordinate_parent = model.velocity_coordinate_parent;
   const Matrix6X& S = data.motion_subspace_world;
+  size_mass_matrix(model, data);
   MatrixX& M = data.mass_matrix;
-  size_dense_matrix(M, model.nv, model.nv);
   auto& rigid = data.composite_rigid_inertia_world;
   auto& added = data.composite_added_inertia_world;
   auto& has_added = data.composite_has_added_inertia;
@@ -54,7 +59,6 @@ const MatrixX& crba(const Model& model, Data& data, const VectorX& q) {
 
 const Eigen::LLT<MatrixX>& factorize_mass_matrix(const Model& model, Data& data) {
   if (!(data.stages.current & StageMarker::mass_factor)) {
-    if (data.mass_matrix_cholesky.rows() != model.nv) data.mass_matrix_cholesky = SizedCholesky(model.nv);
     data.mass_matrix_cholesky.compute(mass_matrix(model, data));
     data.stages.current |= StageMarker::mass_factor;
   }

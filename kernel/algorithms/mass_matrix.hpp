@@ -5,6 +5,12 @@
 
 namespace heavesim {
 
+/// Sizes data.mass_matrix (zeroed) and its Cholesky factor, if they are not sized yet:
+/// mass_matrix() and factorize_mass_matrix() do so at their first call; a system whose
+/// every evaluation forms M does so when it is made, so that not even its first
+/// evaluation allocates (Data(model) leaves the dense matrices to their first use).
+void size_mass_matrix(const Model& model, Data& data);
+
 /// M(q) from the current position stage; fills data.mass_matrix (both triangles).
 const MatrixX& mass_matrix(const Model& model, Data& data);
 

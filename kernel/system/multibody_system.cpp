@@ -34,13 +34,10 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
   bool joint_elements = false;
   for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
   applied_dependencies_ = {false, joint_elements, joint_elements, false};
-  // Every evaluation of a CRBA system, or of one with loops, forms M and its factor: they
-  // are sized here, so that not even the first evaluation allocates (Data(model) leaves
-  // the dense matrices to their first use; an ABA system without loops never has them).
-  if (settings_.method == ForwardDynamicsMethod::composite_rigid_body || model_->has_constraints()) {
-    size_dense_matrix(data_.mass_matrix, model_->nv, model_->nv);
-    data_.mass_matrix_cholesky = SizedCholesky(model_->nv);
-  }
+  // Every evaluation of a CRBA system, or of one with loops, forms M and its factor (an
+  // ABA system without loops never has them).
+  if (settings_.method == ForwardDynamicsMethod::composite_rigid_body || model_->has_constraints())
+    size_mass_matrix(*model_, data_);
 }
 
 void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
