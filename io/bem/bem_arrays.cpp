@@ -33,6 +33,14 @@ void check_distinct(const hdf5::Reader& file, const std::string& dataset, const 
       file.fail(dataset, fmt::format("the {} {:g} {} twice", what, sorted[k], unit), fmt::format("distinct {}s", what));
 }
 
+void require_a_finite_frequency(const hdf5::Reader& file, const std::string& dataset,
+                                const std::vector<double>& angular_frequencies) {
+  if (angular_frequencies.empty())
+    file.fail(dataset, "no frequency 0 < w < inf (only w = 0 or w = inf entries)",
+              "the finite frequencies of the BEM run: the coefficients at w = 0 and w = inf alone give no "
+              "radiation damping or wave excitation");
+}
+
 }  // namespace
 
 AxisArray::AxisArray(hdf5::Array array, const std::vector<int>& logical_to_stored) : array_(std::move(array)) {
@@ -80,6 +88,7 @@ void symmetrise_checked(const hdf5::Reader& file, const std::string& dataset, hy
 }
 
 void sort_by_frequency(const hdf5::Reader& file, const std::string& dataset, hydro::RadiationData& data) {
+  require_a_finite_frequency(file, dataset, data.angular_frequencies);
   const std::vector<std::size_t> order = ascending_order(data.angular_frequencies);
   data.angular_frequencies = permuted(data.angular_frequencies, order);
   data.added_mass = permuted(data.added_mass, order);
@@ -89,6 +98,7 @@ void sort_by_frequency(const hdf5::Reader& file, const std::string& dataset, hyd
 
 void sort_by_frequency_and_heading(const hdf5::Reader& file, const std::string& dataset,
                                    hydro::ExcitationData& data) {
+  require_a_finite_frequency(file, dataset, data.angular_frequencies);
   const std::vector<std::size_t> frequencies = ascending_order(data.angular_frequencies);
   const std::vector<std::size_t> headings = ascending_order(data.headings);
   data.angular_frequencies = permuted(data.angular_frequencies, frequencies);

@@ -45,7 +45,7 @@ void symmetrise_checked(const hdf5::Reader& file, const std::string& dataset, hy
                         const std::string& at);
 
 /// Orders the finite-frequency entries by ascending frequency and fails (naming
-/// `dataset`) when a frequency repeats.
+/// `dataset`) when there is none (only w = 0 or w = inf entries) or a frequency repeats.
 void sort_by_frequency(const hdf5::Reader& file, const std::string& dataset, hydro::RadiationData& data);
 void sort_by_frequency_and_heading(const hdf5::Reader& file, const std::string& dataset, hydro::ExcitationData& data);
 

@@ -150,8 +150,6 @@ hydro::RadiationData read_bemio_radiation(const std::string& path, const CaseFlu
     data.added_mass.push_back(added_mass);
     data.damping.push_back(symmetric_part(b));
   }
-  if (data.angular_frequencies.empty())
-    file.fail(parameters + "w", "no frequency w > 0", "the finite frequencies of the BEM run");
   sort_by_frequency(file, parameters + "w", data);
   return data;
 }

@@ -144,8 +144,6 @@ hydro::RadiationData read_capytaine_radiation(const std::string& path, const Cas
                           *std::min_element(omega.begin(), omega.end()), *std::max_element(omega.begin(), omega.end())),
               "an omega = inf entry: the time-domain model needs the infinite-frequency added mass A(inf) (solve "
               "the radiation problems at omega = inf too)");
-  if (data.angular_frequencies.empty())
-    file.fail("/omega", "no frequency 0 < omega < inf", "the finite frequencies of the BEM run");
   sort_by_frequency(file, "/omega", data);
   return data;
 }
@@ -197,8 +195,6 @@ hydro::ExcitationData read_capytaine_excitation(const std::string& path, const C
       data.force[h].push_back(X);
     }
   }
-  if (data.angular_frequencies.empty())
-    file.fail("/omega", "no frequency 0 < omega < inf", "the finite frequencies of the diffraction problems");
   sort_by_frequency_and_heading(file, "/omega", data);
   return data;
 }

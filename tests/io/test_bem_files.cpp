@@ -187,6 +187,7 @@ const BadFile bad_files[] = {
   {"bemio_scaled_flag_invalid.h5", "hydrostatics", ":/simulation_parameters/scaled", "scaled = 2"},
   {"bemio_wrong_units.h5", "radiation", ":/simulation_parameters/w", "units = 'Hz'"},
   {"bemio_missing_excitation_im.h5", "excitation", ":/body1/hydro_coeffs/excitation/im", "no such dataset"},
+  {"bemio_only_zero_frequency.h5", "excitation", ":/simulation_parameters/w", "no frequency 0 < w < inf"},
   {"capytaine_not_netcdf.nc", "radiation", "", "not an HDF5 file"},
   {"capytaine_truncated.nc", "hydrostatics", "", "truncated or damaged"},
   {"capytaine_no_infinite_frequency.nc", "radiation", ":/omega", "no omega = inf entry"},
