@@ -42,9 +42,10 @@ def describe(label, ref, run, units):
           f"(reference: std {np.std(ref):.4g} {units}, peak-to-peak {np.ptp(ref):.4g} {units})")
 
 
-def every_number(reference_path, run_path):
-    """Prints every floating-point dataset or attribute (compound fields included) that
-    differs between the two files, and how many there are."""
+def differing_numbers(reference_path, run_path):
+    """{name: largest |difference|} of every floating-point dataset or attribute (compound
+    fields included, name@attribute for an attribute) that differs between the two files;
+    inf where the shapes differ."""
     import h5py
     differences = {}
 
@@ -71,6 +72,13 @@ def every_number(reference_path, run_path):
                     compare(f"{name}@{key}", value, run[name].attrs[key])
         visit("/", reference["/"])
         reference.visititems(visit)
+    return differences
+
+
+def every_number(reference_path, run_path):
+    """Prints every floating-point dataset or attribute that differs between the two
+    files, and how many there are."""
+    differences = differing_numbers(reference_path, run_path)
     for name, difference in sorted(differences.items()):
         print(f"{name}: max |difference| {difference:.3g}")
     print(f"{len(differences)} floating-point datasets or attributes differ")

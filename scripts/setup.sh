@@ -14,6 +14,7 @@ packages=(
   pybind11-dev python3-dev     # the heavesim Python package
   python3-yaml                 # heavesim report reads the resolved case (scripts/report.py)
   chromium fonts-dejavu-core   # the report's headless-browser test (CTest Report.*)
+  valgrind                     # the race detector the threads' test runs under (CTest Threads.*)
 )
 if [[ "${1:-}" == "--peers" ]]; then
   packages+=(libmujoco-dev libqhull-dev libdart-dev libbullet-dev libsiconos-numerics-dev)

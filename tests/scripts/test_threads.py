@@ -1,0 +1,70 @@
+"""The recording threads checked by a race detector that does not share our reasoning.
+
+A run records on three threads: the integrating one, the result file's block writer and
+the recorder's block statistics (app/output/background_worker.hpp, docs/architecture.md).
+Their correctness rests on a handshake: a worker reads only the last whole block, and
+the integrating thread waits for it (settle, wait) before it touches that block or the
+HDF5 file again. Valgrind's Helgrind checks every access to memory that two threads
+share against the happens-before order that the locks, condition variables and thread
+starts and joins it observes give; an access that nothing orders is a "possible data
+race", whether or not the schedule of this run made it go wrong. It runs the threads on
+one core, one at a time in its own order, so the result file is also compared with an
+ordinary run's: the threads' schedule must not change a number.
+
+Run from CTest (tests/CMakeLists.txt: Threads.*), which sets HEAVESIM_BINARY and
+HEAVESIM_TESTS_BINARY; needs valgrind (scripts/setup.sh installs it).
+"""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+BINARY = os.environ.get("HEAVESIM_BINARY", os.path.join(ROOT, "build", "heavesim"))
+TESTS_BINARY = os.environ.get("HEAVESIM_TESTS_BINARY", os.path.join(ROOT, "build", "tests", "heavesim_tests"))
+SUPPRESSIONS = os.path.join(ROOT, "tests", "scripts", "helgrind.supp")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import compare_runs  # noqa: E402
+
+# 250 s of the drilling case at its 0.05 s output interval: 5,001 samples, so four whole
+# blocks of 1024 go to both workers while the integrating thread fills the next.
+DRILLING_250_S = ["cases/drilling.yaml", "-q", "--set", "solver.t_end=250", "--set", "output.evaluate_after=100"]
+
+
+def helgrind(command):
+    """The command under Helgrind: (exit code, its output, Valgrind's report)."""
+    run = subprocess.run(["valgrind", "--tool=helgrind", "--error-exitcode=9", f"--suppressions={SUPPRESSIONS}",
+                          *command], capture_output=True, text=True, cwd=ROOT, timeout=900)
+    return run.returncode, run.stdout, run.stderr
+
+
+class HelgrindSeesNoRace(unittest.TestCase):
+    def assert_clean(self, code, report):
+        # Any Helgrind error fails, not only races: a condition variable signalled by a
+        # thread that does not hold its mutex is one it cannot check.
+        self.assertIn("ERROR SUMMARY: 0 errors", report, report[-6000:])
+        self.assertEqual(code, 0, report[-6000:])
+
+    def test_a_recorded_run_with_both_workers(self):
+        with tempfile.TemporaryDirectory() as d:
+            ordinary, checked = os.path.join(d, "ordinary.h5"), os.path.join(d, "helgrind.h5")
+            run = subprocess.run([BINARY, "run", *DRILLING_250_S, "-o", ordinary], capture_output=True, text=True,
+                                 cwd=ROOT, timeout=300)
+            self.assertEqual(run.returncode, 0, run.stderr)
+            code, _, report = helgrind([BINARY, "run", *DRILLING_250_S, "-o", checked])
+            self.assert_clean(code, report)
+            # Every number but the run's own timing, bit for bit, under another schedule.
+            differences = compare_runs.differing_numbers(ordinary, checked)
+            self.assertLessEqual(set(differences), {"summary@wall_time_s", "summary@real_time_factor"}, differences)
+
+    def test_the_worker_on_its_own(self):
+        # The worker's own tests (tests/app/test_background_worker.cpp): its jobs'
+        # writes read back after wait(), a failure handed over, the destructor's join.
+        code, output, report = helgrind([TESTS_BINARY, "--gtest_filter=BackgroundWorker.*"])
+        self.assert_clean(code, report)
+        self.assertIn("[  PASSED  ] 4 tests", output)
+
+
+if __name__ == "__main__":
+    unittest.main()
