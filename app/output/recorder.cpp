@@ -148,7 +148,7 @@ void Recorder::add(Channel channel) {
     // The statistics exist from the start, NaN until finish() overwrites them in place
     // (the file is then in SWMR mode, where attributes are rewritten, not created).
     const std::vector<std::string> names = statistic_names(channel);
-    file_->set_record_attribute(channel.path, "statistics", names,
+    file_->set_record_attribute(channel.series, "statistics", names,
                                 std::vector<double>(names.size() * width, std::nan("")));
   }
   channels_.push_back(std::move(channel));
@@ -163,24 +163,22 @@ void Recorder::define_channels(const CaseDefinition& definition) {
   add({"/time", 0, "s", "simulation time", {}, [](double t, double* out) { out[0] = t; }});
 
   if (output.bodies) {
+    body_frames_.resize(model.num_links());
     for (int i = 1; i < model.num_links(); ++i) {
       const std::string base = "/bodies/" + model.links[i].name;
-      auto X_world_body = [&system, i]() {
-        return system.data().X_world_link[i] * system.model().links[i].X_link_body;
-      };
       add({base + "/position", 3, "m", "body reference point (body frame origin), world frame", xyz,
-           [X_world_body](double, double* out) { map3(out) = X_world_body().translation(); }});
+           [this, i](double, double* out) { map3(out) = body_frames_[i].translation(); }});
       add({base + "/orientation", 4, "-", "unit quaternion w, x, y, z of the body frame, body -> world",
-           {".w", ".x", ".y", ".z"}, [X_world_body](double, double* out) {
-             const Eigen::Quaterniond q(X_world_body().rotation());
+           {".w", ".x", ".y", ".z"}, [this, i](double, double* out) {
+             const Eigen::Quaterniond q(body_frames_[i].rotation());
              out[0] = q.w(); out[1] = q.x(); out[2] = q.y(); out[3] = q.z();
            }});
       add({base + "/velocity", 6, "rad/s, m/s",
            "[angular velocity; velocity of the body reference point], world axes",
-           {".wx", ".wy", ".wz", ".vx", ".vy", ".vz"}, [&system, X_world_body, i](double, double* out) {
+           {".wx", ".wy", ".wz", ".vx", ".vy", ".vz"}, [this, &system, i](double, double* out) {
              const Motion& v = system.data().velocity_world[i];
              map3(out) = v.angular();
-             map3(out + 3) = v.point_velocity(X_world_body().translation());
+             map3(out + 3) = v.point_velocity(body_frames_[i].translation());
            }, -1, {}, {}, {"rad/s", "rad/s", "rad/s", "m/s", "m/s", "m/s"}});
     }
   }
@@ -383,6 +381,8 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
   require_stages(system.data(), stages, t, evaluation);
+  for (std::size_t i = 1; i < body_frames_.size(); ++i)
+    body_frames_[i] = system.data().X_world_link[i] * system.model().links[i].X_link_body;
   csv_row_.clear();
   for (Channel& channel : channels_) {
     // Filled in place, in the file's block of samples (or the recorder's own): no copy.
@@ -471,7 +471,7 @@ void Recorder::write_response_statistics(Channel& channel) {
     for (const stats::StatisticField& field : stats::statistic_fields())
       if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
   }
-  file_->set_record_attribute(channel.path, "statistics", names, values);
+  file_->set_record_attribute(channel.series, "statistics", names, values);
 }
 
 double Recorder::channel_maximum(const std::string& path) const {
@@ -490,10 +490,10 @@ void Recorder::finish() {
   }
   if (!file_) return;
   for (Channel& channel : channels_) {
-    file_->set_attribute(channel.path, "minimum", channel.statistics.minimum());
-    file_->set_attribute(channel.path, "maximum", channel.statistics.maximum());
-    file_->set_attribute(channel.path, "mean", channel.statistics.mean());
-    file_->set_attribute(channel.path, "standard_deviation", channel.statistics.standard_deviation());
+    file_->set_attribute(channel.series, "minimum", channel.statistics.minimum());
+    file_->set_attribute(channel.series, "maximum", channel.statistics.maximum());
+    file_->set_attribute(channel.series, "mean", channel.statistics.mean());
+    file_->set_attribute(channel.series, "standard_deviation", channel.statistics.standard_deviation());
     write_response_statistics(channel);
   }
   file_->set_attribute("/", "statistics_window_start", evaluate_after());

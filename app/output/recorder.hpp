@@ -124,6 +124,9 @@ class Recorder {
   stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
   std::int64_t window_samples_ = 0;             // samples expected in the evaluation window
   VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
+  /// X_world_body of every link at the sample being recorded (output.bodies; empty
+  /// otherwise): computed once a sample for the body's position, orientation and velocity.
+  AlignedVector<Transform> body_frames_;
   long samples_ = 0;
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
   bool energy_is_conserved_ = false;

@@ -62,7 +62,7 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   for (const auto& [object, bytes] : {std::pair{"/", root_room_bytes}, std::pair{"/summary", summary_room_bytes}}) {
     const std::vector<unsigned char> room(bytes, 0);
     const Handle room_space(H5Screate_simple(1, &bytes, nullptr));
-    write_attribute(object, reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
+    write_attribute(open_object(object).get(), reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
   }
 }
 
@@ -121,37 +121,63 @@ Handle ResultFile::open_object(const std::string& object_path) {
   return object;
 }
 
-void ResultFile::write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
-                                 const void* data) {
-  check_usable();
-  const Handle object = open_object(object_path);
+void ResultFile::write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data) {
   Handle attribute;
-  if (H5Aexists(object.get(), name.c_str()) > 0) {
-    attribute = Handle(H5Aopen(object.get(), name.c_str(), H5P_DEFAULT));
+  if (H5Aexists(object, name.c_str()) > 0) {
+    attribute = Handle(H5Aopen(object, name.c_str(), H5P_DEFAULT));
     check(attribute.valid(), "cannot write result file");
     const Handle stored_type(H5Aget_type(attribute.get()));
     const Handle stored_space(H5Aget_space(attribute.get()));
     if (H5Tequal(stored_type.get(), type) <= 0 || H5Sextent_equal(stored_space.get(), space) <= 0) {
       attribute.reset();
-      check(H5Adelete(object.get(), name.c_str()) >= 0, "cannot write result file");
+      check(H5Adelete(object, name.c_str()) >= 0, "cannot write result file");
     }
   }
   if (!attribute.valid()) {
     // Once published only: while the layout is built, headers grow as they need.
-    if (published_ && name != reserved_room_name && H5Aexists(object.get(), reserved_room_name) > 0)
-      check(H5Adelete(object.get(), reserved_room_name) >= 0, "cannot write result file");
-    attribute = Handle(H5Acreate2(object.get(), name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT));
+    if (published_ && name != reserved_room_name && H5Aexists(object, reserved_room_name) > 0)
+      check(H5Adelete(object, reserved_room_name) >= 0, "cannot write result file");
+    attribute = Handle(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT));
   }
   check(attribute.valid(), "cannot write result file");
   check(H5Awrite(attribute.get(), type, data) >= 0, "cannot write result file");
 }
 
-void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
-  settle();
+void ResultFile::write_doubles(hid_t object, const std::string& name, const std::vector<double>& values) {
+  const hsize_t size = values.size();
+  const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
+  write_attribute(object, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
+}
+
+void ResultFile::write_records(hid_t object, const std::string& name, const std::vector<std::string>& fields,
+                               const std::vector<double>& values) {
+  auto known = std::find_if(record_types_.begin(), record_types_.end(),
+                            [&fields](const auto& entry) { return entry.first == fields; });
+  if (known == record_types_.end()) {
+    Handle type(H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double)));
+    check(type.valid(), "cannot write result file");
+    for (std::size_t f = 0; f < fields.size(); ++f)
+      check(H5Tinsert(type.get(), fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE) >= 0,
+            "cannot write result file");
+    record_types_.emplace_back(fields, std::move(type));
+    known = record_types_.end() - 1;
+  }
+  const hsize_t rows = fields.empty() ? 0 : values.size() / fields.size();
+  const Handle space(H5Screate_simple(1, &rows, nullptr));
+  write_attribute(object, name, known->second.get(), space.get(), values.data());
+}
+
+void ResultFile::write_text_attribute(hid_t object, const std::string& name, const std::string& value) {
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
   const char* text = value.c_str();
-  write_attribute(object_path, name, type.get(), space.get(), &text);
+  write_attribute(object, name, type.get(), space.get(), &text);
+}
+
+void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
+  settle();
+  check_usable();
+  write_text_attribute(open_object(object_path).get(), name, value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, double value) {
@@ -160,28 +186,36 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, long value) {
   settle();
+  check_usable();
   const Handle space(H5Screate(H5S_SCALAR));
-  write_attribute(object_path, name, H5T_NATIVE_LONG, space.get(), &value);
+  write_attribute(open_object(object_path).get(), name, H5T_NATIVE_LONG, space.get(), &value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name,
                                const std::vector<double>& values) {
   settle();
-  const hsize_t size = values.size();
-  const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
-  write_attribute(object_path, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
+  check_usable();
+  write_doubles(open_object(object_path).get(), name, values);
 }
 
 void ResultFile::set_record_attribute(const std::string& object_path, const std::string& name,
                                      const std::vector<std::string>& fields, const std::vector<double>& values) {
   settle();
-  const Handle type(H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double)));
-  check(type.valid(), "cannot write result file");
-  for (std::size_t f = 0; f < fields.size(); ++f)
-    check(H5Tinsert(type.get(), fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE) >= 0, "cannot write result file");
-  const hsize_t rows = fields.empty() ? 0 : values.size() / fields.size();
-  const Handle space(H5Screate_simple(1, &rows, nullptr));
-  write_attribute(object_path, name, type.get(), space.get(), values.data());
+  check_usable();
+  write_records(open_object(object_path).get(), name, fields, values);
+}
+
+void ResultFile::set_attribute(int series, const std::string& name, const std::vector<double>& values) {
+  settle();
+  check_usable();
+  write_doubles(series_.at(series).dataset.get(), name, values);
+}
+
+void ResultFile::set_record_attribute(int series, const std::string& name, const std::vector<std::string>& fields,
+                                     const std::vector<double>& values) {
+  settle();
+  check_usable();
+  write_records(series_.at(series).dataset.get(), name, fields, values);
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
@@ -227,13 +261,15 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.buffer.assign(block_rows * series.width, 0.0);
   series.last_block.assign(block_rows * series.width, 0.0);
   series_.push_back(std::move(series));
-  set_attribute(dataset_path, "units", units);
-  set_attribute(dataset_path, "description", description);
+  const int id = static_cast<int>(series_.size()) - 1;
+  const hid_t object = series_[id].dataset.get();
+  write_text_attribute(object, "units", units);
+  write_text_attribute(object, "description", description);
   // The per-column statistics written at the end exist from the start ("not computed
   // yet", NaN, until then): writing them then overwrites in place, allocating nothing.
   const std::vector<double> not_computed(std::max(columns, 1), std::nan(""));
-  for (const char* statistic : series_statistics) set_attribute(dataset_path, statistic, not_computed);
-  return static_cast<int>(series_.size()) - 1;
+  for (const char* statistic : series_statistics) write_doubles(object, statistic, not_computed);
+  return id;
 }
 
 void ResultFile::append(int series_id, const double* row) {

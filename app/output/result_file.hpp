@@ -78,6 +78,11 @@ class ResultFile {
   /// row), each a double field per name; h5py reads it as a numpy structured array.
   void set_record_attribute(const std::string& object_path, const std::string& name,
                             const std::vector<std::string>& fields, const std::vector<double>& values);
+  /// The same two on a series (add_series' id), through the dataset it holds open: no
+  /// lookup by path (a run writes a dozen attributes on each of its series).
+  void set_attribute(int series, const std::string& name, const std::vector<double>& values);
+  void set_record_attribute(int series, const std::string& name, const std::vector<std::string>& fields,
+                            const std::vector<double>& values);
 
   /// A fixed string dataset (e.g. /case/yaml).
   void write_text(const std::string& dataset_path, const std::string& text, const std::string& description);
@@ -134,10 +139,14 @@ class ResultFile {
   };
   /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
   hdf5::Handle open_object(const std::string& object_path);
-  /// Writes attribute `name` of `object_path`, overwriting it in place when it exists with
-  /// the same type and shape (no allocation), else creating it.
-  void write_attribute(const std::string& object_path, const std::string& name, hid_t type, hid_t space,
-                       const void* data);
+  /// Writes attribute `name` of `object` (an open group or dataset), overwriting it in
+  /// place when it exists with the same type and shape (no allocation), else creating it.
+  void write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data);
+  /// The typed writes behind set_attribute and set_record_attribute, on an open object.
+  void write_text_attribute(hid_t object, const std::string& name, const std::string& value);
+  void write_doubles(hid_t object, const std::string& name, const std::vector<double>& values);
+  void write_records(hid_t object, const std::string& name, const std::vector<std::string>& fields,
+                     const std::vector<double>& values);
   /// Every series at least `rows` long (extended_since_commit_ when one grows).
   void extend_series(hsize_t rows);
   /// Rows [first, first + rows) of a series from `rows_data` (the dataset is long enough).
@@ -168,6 +177,9 @@ class ResultFile {
   hsize_t reserved_samples_ = 0;
   hdf5::Handle file_;
   std::vector<Series> series_;
+  /// The compound types of set_record_attribute, one per list of field names, built once
+  /// (a run writes the same two lists on every series, at its creation and at the end).
+  std::vector<std::pair<std::vector<std::string>, hdf5::Handle>> record_types_;
   hsize_t buffered_samples_ = 0;  // whole samples in the block (not yet on disk)
   hsize_t rows_on_disk_ = 0;      // rows written, or handed to the block writer, in every series (>= samples_written_)
   hsize_t handed_first_row_ = 0;  // the first row of the block in the block writer's hands

@@ -4,6 +4,7 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <filesystem>
@@ -51,6 +52,15 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
   EXPECT_DOUBLE_EQ(time.back(), 1.0);
   const std::vector<double> q = file.read("/joints/shoulder/q");
   EXPECT_DOUBLE_EQ(q.front(), std::acos(0.0));
+  // The whole-record statistics written at the end (through the series' open dataset,
+  // over the NaN placeholders written at its creation) are those of the samples read back.
+  const auto [q_min, q_max] = std::minmax_element(q.begin(), q.end());
+  EXPECT_EQ(file.double_attribute("/joints/shoulder/q", "minimum"), *q_min);
+  EXPECT_EQ(file.double_attribute("/joints/shoulder/q", "maximum"), *q_max);
+  double q_sum = 0.0;
+  for (double value : q) q_sum += value;
+  EXPECT_NEAR(file.double_attribute("/joints/shoulder/q", "mean"), q_sum / q.size(), 1e-14);
+  EXPECT_EQ(file.double_attribute("/time", "maximum"), 1.0);
   EXPECT_TRUE(std::filesystem::exists(csv_directory + "/two_link.csv"));
   std::ifstream csv(csv_directory + "/two_link.csv");
   std::string header;

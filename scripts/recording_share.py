@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Where the integrating (main) thread of `heavesim run` spends its time: integration,
+set-up, or recording (the result file's layout, the samples, the statistics, the end).
+
+    /usr/bin/python3 scripts/recording_share.py [--binary build/heavesim] [--runs 6] CASE.yaml [--set k=v ...]
+
+Runs the case `--runs` times under `perf record --call-graph dwarf` (Debian's linux-perf)
+and classifies every sample of the main thread by the frames on its stack:
+integration (Integrator::advance_to, initialize, make_integrator), set-up (load_case,
+build_scene) and everything else run_command does, which is recording. The share is of
+CPU samples, so it does not depend on the machine's speed between runs, but it counts
+only the main thread (the block writer and the statistics worker run beside it); the
+wall-time proxy of docs/performance.md (a run with 7 samples against the full one)
+leaves out the recording's fixed cost, which the 7-sample run pays too.
+"""
+import argparse
+import collections
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+PARTS = [
+    ("integration", ("Integrator::advance_to", "Integrator::initialize", "make_integrator")),
+    ("set-up", ("load_case", "build_scene")),
+]
+# Named pieces of the recording, reported beside the three shares (a stack may hold several).
+DETAILS = [
+    ("recorder constructor (channels, datasets, attributes)", "Recorder::Recorder"),
+    ("per-sample evaluation (MultibodySystem::evaluate)", "MultibodySystem::evaluate"),
+    ("per-sample channels (Recorder::record_evaluation)", "Recorder::record_evaluation"),
+    ("end of run (Recorder::finish)", "Recorder::finish"),
+]
+
+
+def stacks(perf_script_text):
+    """Yields (thread name, frames) per sample of `perf script -F comm,tid,ip,sym` output."""
+    frames, header = [], None
+    for line in perf_script_text.splitlines():
+        if not line.strip():
+            if header is not None:
+                yield header, frames
+            frames, header = [], None
+        elif not line[0].isspace():
+            header = line.strip()
+        else:
+            parts = line.strip().split(None, 1)
+            frames.append(parts[1] if len(parts) > 1 else "?")
+    if header is not None:
+        yield header, frames
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("case")
+    parser.add_argument("--binary", default="build/heavesim")
+    parser.add_argument("--runs", type=int, default=6)
+    parser.add_argument("--set", action="append", default=[], dest="overrides")
+    arguments = parser.parse_args()
+    if shutil.which("perf") is None:
+        sys.exit("recording_share: needs perf (apt-get install linux-perf)")
+    with tempfile.TemporaryDirectory() as directory:
+        data, result = os.path.join(directory, "perf.data"), os.path.join(directory, "run.h5")
+        run = [arguments.binary, "run", arguments.case, "-o", result, "-q"]
+        for override in arguments.overrides:
+            run += ["--set", override]
+        loop = " && ".join([" ".join(run)] * arguments.runs)
+        subprocess.run(["perf", "record", "-q", "-F", "10000", "--call-graph", "dwarf,16384", "-o", data, "--",
+                        "sh", "-c", loop], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        text = subprocess.run(["perf", "script", "-i", data, "-F", "comm,tid,ip,sym"], check=True,
+                              capture_output=True, text=True).stdout
+    shares, details, total = collections.Counter(), collections.Counter(), 0
+    for _, frames in stacks(text):
+        if not any("heavesim::run_command" in frame for frame in frames):
+            continue  # another thread, or a stack perf could not unwind
+        total += 1
+        part = next((name for name, keys in PARTS if any(k in f for f in frames for k in keys)), "recording")
+        shares[part] += 1
+        for name, key in DETAILS:
+            if any(key in frame for frame in frames):
+                details[name] += 1
+    if total == 0:
+        sys.exit("recording_share: no sample of the main thread was unwound")
+    print(f"{total} samples of the main thread over {arguments.runs} runs of {arguments.case}")
+    for name in ("recording", "integration", "set-up"):
+        print(f"  {100.0 * shares[name] / total:5.1f} %  {name}")
+    print("  of which, in the recording:")
+    for name, _ in DETAILS:
+        print(f"  {100.0 * details[name] / total:5.1f} %  {name}")
+
+
+if __name__ == "__main__":
+    main()
