@@ -146,7 +146,8 @@ void Recorder::add(Channel channel) {
   if (file_) {
     channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
     // The statistics exist from the start, NaN until finish() overwrites them in place
-    // (the file is then in SWMR mode, where attributes are rewritten, not created).
+    // (after the layout is published, a series' object header must not grow:
+    // app/output/result_file.hpp).
     const std::vector<std::string> names = statistic_names(channel);
     file_->set_record_attribute(channel.series, "statistics", names,
                                 std::vector<double>(names.size() * width, std::nan("")));

@@ -229,8 +229,8 @@ void ResultFile::write_text(const std::string& dataset_path, const std::string& 
   check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
   const char* data = text.c_str();
   check(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data) >= 0, "cannot write result file");
-  set_attribute(dataset_path, "description", description);
-  set_attribute(dataset_path, "units", std::string("-"));
+  write_text_attribute(dataset.get(), "description", description);
+  write_text_attribute(dataset.get(), "units", "-");
 }
 
 int ResultFile::add_series(const std::string& dataset_path, int columns, const std::string& units,
@@ -370,6 +370,11 @@ void ResultFile::publish() {
     throw OutputError(path_, "cannot create result file", cause);
   }
   published_ = true;
+}
+
+void ResultFile::mark_complete() {
+  flush();
+  set_attribute("/", "complete", 1L);
 }
 
 void ResultFile::close() {

@@ -120,6 +120,11 @@ class ResultFile {
   /// Writes the whole samples buffered, then `samples_written`, and flushes the file to
   /// disk; the first flush publishes the file under its name.
   void flush();
+  /// The run is whole: flushes everything written so far (the statistics and the summary
+  /// among it), then sets the root attribute complete = 1, for close() to write. HDF5 writes
+  /// a flush's dirty metadata in no set order, so a SIGKILL during one flush that held
+  /// both could leave complete = 1 beside statistics still NaN.
+  void mark_complete();
   /// Samples a block holds (one chunk of every series: a block write fills whole chunks).
   static constexpr hsize_t block_rows = 1024;
   /// Wall time between two commits while the run writes blocks [s].
@@ -141,6 +146,7 @@ class ResultFile {
   hdf5::Handle open_object(const std::string& object_path);
   /// Writes attribute `name` of `object` (an open group or dataset), overwriting it in
   /// place when it exists with the same type and shape (no allocation), else creating it.
+  /// It and the three below call HDF5 at once: their callers settle() and check_usable() first.
   void write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data);
   /// The typed writes behind set_attribute and set_record_attribute, on an open object.
   void write_text_attribute(hid_t object, const std::string& name, const std::string& value);

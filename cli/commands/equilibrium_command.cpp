@@ -119,7 +119,7 @@ int equilibrium_command(const EquilibriumOptions& options) {
     file.set_attribute("/", "equilibrium_constraint_residual", result.constraint_residual);
     file.set_attribute("/", "equilibrium_lowest_squared_frequency", result.lowest_squared_frequency);
     file.set_attribute("/", "equilibrium_stability", std::string(stability_name(result.stability)));
-    file.set_attribute("/", "complete", 1L);
+    file.mark_complete();
     file.close();
   }
   if (!options.initial_path.empty()) write_initial_fragment(options.initial_path, definition, scene);

@@ -153,7 +153,7 @@ int kinematics_command(const RunOptions& options) {
     file.set_attribute("/summary", "smallest_singular_ratio", outcome.smallest_singular_ratio);
     file.set_attribute("/summary", "max_dynamic_residual", outcome.max_dynamic_residual);
     file.set_attribute("/summary", "wall_time_s", progress.elapsed());
-    if (complete) file.set_attribute("/", "complete", 1L);
+    if (complete) file.mark_complete();
     file.close();
   };
   try {

@@ -104,7 +104,7 @@ int run_command(const RunOptions& options) {
     }
     recorder.finish();
     write_run_statistics(file, outcome.statistics, progress.elapsed(), outcome.time_reached - solver.t_start);
-    file.set_attribute("/", "complete", 1L);  // last: everything else is on disk already
+    file.mark_complete();  // last: everything else is on disk first
     file.close();
   } catch (const OutputError& error) {
     progress.clear();

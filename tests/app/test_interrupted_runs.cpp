@@ -59,11 +59,14 @@ void write_run(const std::string& path) {
     file.end_sample();
   }
   file.flush();
-  for (const int series : {time, energy})
-    for (const char* statistic : ResultFile::series_statistics) file.set_attribute(series, statistic, {1.0});
+  // A value per series, so that a reader can tell a statistic written to the wrong series.
+  for (const char* statistic : ResultFile::series_statistics) {
+    file.set_attribute(time, statistic, {1.0});
+    file.set_attribute(energy, statistic, {2.0});
+  }
   file.set_attribute("/summary", "samples", writer_samples);
   file.set_attribute("/summary", "wall_time_s", 0.25);
-  file.set_attribute("/", "complete", 1L);
+  file.mark_complete();
   file.close();
 }
 
@@ -84,9 +87,13 @@ std::string whole_samples_problem(const std::string& path) {
       return "sample " + std::to_string(k) + " is not the one written";
   const long complete = file.long_attribute("/", "complete");
   if (complete == 1 && written != writer_samples) return "complete = 1 before every sample was written";
-  // The statistics are there at every point: "not computed" (NaN) or their value.
-  const double minimum = file.double_attribute("/time", "minimum");
-  if (!std::isnan(minimum) && minimum != 1.0) return "unreadable statistics";
+  // The statistics are there at every point: "not computed" (NaN) or their value, each
+  // on its own series.
+  const double time_minimum = file.double_attribute("/time", "minimum");
+  const double energy_minimum = file.double_attribute("/signals/energy", "minimum");
+  if (!std::isnan(time_minimum) && time_minimum != 1.0) return "unreadable statistics of /time";
+  if (!std::isnan(energy_minimum) && energy_minimum != 2.0) return "unreadable statistics of /signals/energy";
+  if (complete == 1 && (time_minimum != 1.0 || energy_minimum != 2.0)) return "complete = 1 without the statistics";
   return "";
 }
 
