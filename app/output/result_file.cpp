@@ -175,8 +175,7 @@ void ResultFile::write_text_attribute(hid_t object, const std::string& name, con
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
-  settle();
-  check_usable();
+  ready_to_write();
   write_text_attribute(open_object(object_path).get(), name, value);
 }
 
@@ -185,42 +184,36 @@ void ResultFile::set_attribute(const std::string& object_path, const std::string
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, long value) {
-  settle();
-  check_usable();
+  ready_to_write();
   const Handle space(H5Screate(H5S_SCALAR));
   write_attribute(open_object(object_path).get(), name, H5T_NATIVE_LONG, space.get(), &value);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name,
                                const std::vector<double>& values) {
-  settle();
-  check_usable();
+  ready_to_write();
   write_doubles(open_object(object_path).get(), name, values);
 }
 
 void ResultFile::set_record_attribute(const std::string& object_path, const std::string& name,
                                      const std::vector<std::string>& fields, const std::vector<double>& values) {
-  settle();
-  check_usable();
+  ready_to_write();
   write_records(open_object(object_path).get(), name, fields, values);
 }
 
 void ResultFile::set_attribute(int series, const std::string& name, const std::vector<double>& values) {
-  settle();
-  check_usable();
+  ready_to_write();
   write_doubles(series_.at(series).dataset.get(), name, values);
 }
 
 void ResultFile::set_record_attribute(int series, const std::string& name, const std::vector<std::string>& fields,
                                      const std::vector<double>& values) {
-  settle();
-  check_usable();
+  ready_to_write();
   write_records(series_.at(series).dataset.get(), name, fields, values);
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
-  settle();
-  check_usable();
+  ready_to_write();
   const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
   const Handle links = hdf5::intermediate_group_links();
@@ -235,8 +228,7 @@ void ResultFile::write_text(const std::string& dataset_path, const std::string& 
 
 int ResultFile::add_series(const std::string& dataset_path, int columns, const std::string& units,
                            const std::string& description) {
-  settle();
-  check_usable();
+  ready_to_write();
   const int rank = columns == 0 ? 1 : 2;
   const hsize_t initial[2] = {reserved_samples_, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
@@ -280,8 +272,7 @@ void ResultFile::end_sample() {
   if (++buffered_samples_ < block_rows) return;
   // The block goes to the block writer, which writes it while the next one is filled;
   // the one before must be on disk first (and a failure of it is thrown here).
-  settle();
-  check_usable();
+  ready_to_write();
   extend_series(rows_on_disk_ + block_rows);  // structural changes stay on this thread
   for (Series& series : series_) series.buffer.swap(series.last_block);
   handed_first_row_ = rows_on_disk_;
@@ -356,8 +347,7 @@ void ResultFile::commit() {
 void ResultFile::flush_file() { check(H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) >= 0, "cannot write result file"); }
 
 void ResultFile::flush() {
-  settle();
-  check_usable();
+  ready_to_write();
   if (buffered_samples_ > 0) write_block(buffered_samples_);
   commit();
 }

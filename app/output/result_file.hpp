@@ -146,7 +146,7 @@ class ResultFile {
   hdf5::Handle open_object(const std::string& object_path);
   /// Writes attribute `name` of `object` (an open group or dataset), overwriting it in
   /// place when it exists with the same type and shape (no allocation), else creating it.
-  /// It and the three below call HDF5 at once: their callers settle() and check_usable() first.
+  /// It and the three below call HDF5 at once: their callers call ready_to_write() first.
   void write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data);
   /// The typed writes behind set_attribute and set_record_attribute, on an open object.
   void write_text_attribute(hid_t object, const std::string& name, const std::string& value);
@@ -163,6 +163,11 @@ class ResultFile {
   /// that calls HDF5 does so first, so that the file's HDF5 objects are never used from
   /// two threads at once (and the serial build of HDF5 could serve as well).
   void settle() { block_writer_.wait(); }
+  /// What every public write does first: settle(), then check_usable().
+  void ready_to_write() {
+    settle();
+    check_usable();
+  }
   /// The first `rows` buffered samples of every series to disk; a sample still being
   /// built moves to the start of the block.
   void write_block(hsize_t rows);
