@@ -8,7 +8,7 @@
 namespace heavesim {
 namespace {
 
-const char* const expression_expectation = "an expression of the variables' joint coordinates (and t) such as "
+const char* const constraint_expectation = "an expression of the variables' joint coordinates (and t) such as "
                                            "s - 0.2*sin(theta)";
 
 /// The name of a joint of the tree at `reader`; another name is refused there with the
@@ -61,13 +61,13 @@ void read_expression_constraint(const NodeReader& item, const std::string& name,
     symbols.push_back(entry.key);
   }
   const NodeReader text = item["expression"];
-  if (!text.node().is_scalar()) text.fail(expression_expectation);
+  if (!text.node().is_scalar()) text.fail(constraint_expectation);
   std::shared_ptr<const CoordinateExpression> function;
   try {
     // muParser's message names an unknown symbol and the column of a syntax error.
     function = std::make_shared<const CoordinateExpression>(text.node().scalar, symbols, expressions.parameters());
   } catch (const std::invalid_argument& e) {
-    text.fail(text.node().describe() + " (" + e.what() + ")", expression_expectation);
+    text.fail(text.node().describe() + " (" + e.what() + ")", constraint_expectation);
   }
   // A constraint of t alone would prescribe nothing about the mechanism (and have a
   // zero Jacobian row); a declared coordinate it does not read is a typo somewhere.

@@ -18,7 +18,7 @@ namespace heavesim {
 
 namespace {
 
-const char* const expression_expectation = "an expression of t such as 8 + 3*sin(t)";
+const char* const motion_expectation = "an expression of t such as 8 + 3*sin(t)";
 
 /// The driver's `table`: a CSV file, its path relative to the file holding the key.
 std::shared_ptr<const TimeFunction> read_table(const NodeReader& item, const std::string& name) {
@@ -50,20 +50,20 @@ std::shared_ptr<const TimeFunction> read_motion(const NodeReader& item, const st
   auto expression = [&](const std::string& key) -> std::optional<std::string> {
     auto node = item.optional(key);
     if (!node) return std::nullopt;
-    if (!node->node().is_scalar()) node->fail(expression_expectation);
+    if (!node->node().is_scalar()) node->fail(motion_expectation);
     // Each expression alone, so that an error points at the right key; muParser's
     // message gives the column ("Unexpected end of expression at position 11").
     try {
       TimeFunction(name, node->node().scalar, std::nullopt, std::nullopt, expressions.parameters());
     } catch (const std::invalid_argument& e) {
-      node->fail(node->node().describe() + " (" + e.what() + ")", expression_expectation);
+      node->fail(node->node().describe() + " (" + e.what() + ")", motion_expectation);
     }
     return node->node().scalar;
   };
   // Required (or a table): a missing key, or one left empty (`position:` with nothing
   // after it is YAML's null), is reported at that key.
   const std::optional<std::string> position = expression("position");
-  if (!position) item["position"].fail(expression_expectation);
+  if (!position) item["position"].fail(motion_expectation);
   const std::optional<std::string> velocity = expression("velocity"), acceleration = expression("acceleration");
   if (velocity.has_value() != acceleration.has_value())
     item[velocity ? "velocity" : "acceleration"].fail("only one of velocity and acceleration",

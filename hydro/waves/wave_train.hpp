@@ -8,6 +8,8 @@
 #include <functional>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "hydro/waves/dispersion.hpp"
 #include "hydro/waves/ramp.hpp"
 

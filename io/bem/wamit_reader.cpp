@@ -87,7 +87,7 @@ void check_frequency_finite(const std::string& path, const Row& row) {
 
 /// `factor * row.values[column]`: a nondimensional coefficient made dimensional (rho g
 /// L^k ...). Fails unless finite: a value near the largest double times rho g overflows.
-double dimensional(const std::string& path, const Row& row, size_t column, double factor) {
+double dimensional_column(const std::string& path, const Row& row, size_t column, double factor) {
   const double value = factor * row.values[column];
   if (!std::isfinite(value))
     throw DataError(path, row.line,
@@ -187,8 +187,8 @@ RadiationData read_wamit_1(const std::string& path, const WamitScaling& s) {
     for (const auto& [pair, r] : b.entries) {
       const auto [i, j] = pair;
       const double k = length_power(L, 3, i, j);
-      A(i, j) = dimensional(path, rows[r], 3, rho * k);
-      if (b.period > 0.0) B(i, j) = dimensional(path, rows[r], 4, rho * w * k);
+      A(i, j) = dimensional_column(path, rows[r], 3, rho * k);
+      if (b.period > 0.0) B(i, j) = dimensional_column(path, rows[r], 4, rho * w * k);
       lines(i, j) = rows[r].line;
     }
     check_symmetric(path, A, lines, "A", b.period);
@@ -277,7 +277,7 @@ ExcitationData read_wamit_3(const std::string& path, const WamitScaling& s) {
     for (const auto& [beta, modes] : it->second) {
       for (const auto& [i, r] : modes) {
         const double scale = rho_g * std::pow(L, i < 3 ? 2 : 3);
-        data.force[h][n][i] = {dimensional(path, rows[r], 5, scale), dimensional(path, rows[r], 6, scale)};
+        data.force[h][n][i] = {dimensional_column(path, rows[r], 5, scale), dimensional_column(path, rows[r], 6, scale)};
       }
       ++h;
     }
@@ -296,7 +296,7 @@ Matrix6 read_wamit_hst(const std::string& path, const WamitScaling& s) {
       throw DataError(path, row.line, fmt::format("a second row for I = {}, J = {}", i + 1, j + 1),
                       fmt::format("one row per (I, J); the first is on line {}", seen(i, j)));
     seen(i, j) = row.line;
-    C(i, j) = dimensional(path, row, 2, s.density * s.gravity * length_power(s.length_scale, 2, i, j));
+    C(i, j) = dimensional_column(path, row, 2, s.density * s.gravity * length_power(s.length_scale, 2, i, j));
   }
   return C;
 }

@@ -25,7 +25,7 @@ DantzigWorkspace::DantzigWorkspace(int size)
 
 namespace {
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
+constexpr double no_limit = std::numeric_limits<double>::infinity();  // a step or room without bound
 enum : signed char { undriven = 0, in_clamped = 1, at_lower = 2, at_upper = 3 };
 
 // L y = b in place, L the leading c x c of the lower factor: by columns, each an axpy
@@ -206,7 +206,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       // goes to its bound (or until another set changes), a free row is singular.
       const bool w_stays = !(s * dw_i > options.pivot_tolerance * std::abs(M(i, i)));
       // The longest step before a set changes.
-      double step = w_stays ? infinity : -w_i / dw_i;
+      double step = w_stays ? no_limit : -w_i / dw_i;
       int limiting = i;
       bool limit_is_bound = false;
       const double own_room = s > 0.0 ? ws.upper[i] - z[i] : z[i] - ws.lower[i];
@@ -214,7 +214,7 @@ ComplementarityResult dantzig(const ComplementarityProblem& problem, DantzigWork
       for (int k = 0; k < c; ++k) {
         const int j = ws.clamped[k];
         const double dz = ws.direction_z[j];
-        const double room = dz > 0.0 ? (ws.upper[j] - z[j]) / dz : dz < 0.0 ? (ws.lower[j] - z[j]) / dz : infinity;
+        const double room = dz > 0.0 ? (ws.upper[j] - z[j]) / dz : dz < 0.0 ? (ws.lower[j] - z[j]) / dz : no_limit;
         if (room < step) step = room, limiting = j, limit_is_bound = true;
       }
       for (int j = 0; j < live; ++j) {

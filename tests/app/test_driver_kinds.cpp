@@ -15,7 +15,9 @@
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_driver_kinds {
 namespace {
 
 std::string write_case(const std::string& name, const std::string& text) {
@@ -158,4 +160,4 @@ TEST(DriverKinds, AngleDriverTorqueOnAPendulumIsTheClosedForm) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_driver_kinds

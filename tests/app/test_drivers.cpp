@@ -14,7 +14,9 @@
 #include "tests/test_support.hpp"
 #include "validation/oracles/reference_integrator.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_drivers {
 namespace {
 
 constexpr double cart_mass = 3.0, rod_mass = 2.0, rod_length = 1.2, g = 9.81;
@@ -143,4 +145,4 @@ TEST(Drivers, WrongDerivativeIsBadInput) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_drivers

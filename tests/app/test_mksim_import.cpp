@@ -19,7 +19,9 @@
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_mksim_import {
 namespace {
 
 std::string read_text(const std::filesystem::path& path) {
@@ -239,4 +241,4 @@ TEST(MksimBadInput, MissingAndDirectoryModelFilesAreBadInput) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_mksim_import

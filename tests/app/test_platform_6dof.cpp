@@ -38,7 +38,9 @@
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_platform_6dof {
 namespace {
 
 using hydro::Matrix6;
@@ -489,4 +491,4 @@ TEST(Platform6Dof, RaoCommandH1MatchesTheFrequencyDomainRao) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_platform_6dof

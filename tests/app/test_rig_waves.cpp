@@ -21,7 +21,9 @@
 #include "tests/test_support.hpp"
 #include "validation/checks/harmonic_fit.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_rig_waves {
 namespace {
 
 constexpr double g = 9.81, rho = 1025.0, rho_steel = 7850.0;
@@ -313,4 +315,4 @@ TEST(RigWaves, C5BitOnBottomStartsAtWob0AndVariesByTheGasSpring) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_rig_waves

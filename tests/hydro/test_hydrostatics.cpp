@@ -12,7 +12,9 @@
 #include "hydro/hydrostatics/wetted_hull.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim::hydro {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::hydro::test_hydrostatics {
 namespace {
 
 constexpr double rho = 1025.0, g = 9.81;
@@ -218,4 +220,4 @@ TEST(HydroHydrostatics, BadGdfNamesFileAndLine) {
 }
 
 }  // namespace
-}  // namespace heavesim::hydro
+}  // namespace heavesim::hydro::test_hydrostatics

@@ -10,7 +10,9 @@
 #include "hydro/radiation/state_space.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim::hydro {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::hydro::test_radiation {
 namespace {
 
 const std::string semisub = testing::source_path("data/mss_semisub/semisub");
@@ -202,4 +204,4 @@ TEST_F(SemisubKernel, H5ConvolutionMatchesStateSpace) {
 }
 
 }  // namespace
-}  // namespace heavesim::hydro
+}  // namespace heavesim::hydro::test_radiation

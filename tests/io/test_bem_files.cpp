@@ -19,7 +19,9 @@
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_bem_files {
 namespace {
 
 constexpr double rho = 1025.0, g = 9.81;
@@ -262,4 +264,4 @@ TEST(BemFiles, CoefficientsThatOverflowOnceDimensionalAreBadData) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_bem_files

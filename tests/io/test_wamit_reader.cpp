@@ -18,7 +18,9 @@
 #include "io/bem/wamit_reader.hpp"
 #include "tests/test_support.hpp"
 
-namespace heavesim::hydro {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::hydro::test_wamit_reader {
 namespace {
 
 constexpr double rho = 1025.0, g = 9.81;
@@ -267,4 +269,4 @@ TEST(HydroBem, ReadersRefuseWhatIsNotARegularFileBeforeOpeningIt) {
 }
 
 }  // namespace
-}  // namespace heavesim::hydro
+}  // namespace heavesim::hydro::test_wamit_reader

@@ -15,7 +15,9 @@
 #include "samples/contact_scenes.hpp"
 #include "tests/kernel/heaving_support_reference.hpp"
 
-namespace heavesim {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::test_joint_stop_events {
 namespace {
 
 constexpr double g = 9.81;
@@ -120,4 +122,4 @@ TEST(JointStopEvents, LoadOnAHeavingFloorLiftsOffAndLandsAsTheClosedForm) {
 }
 
 }  // namespace
-}  // namespace heavesim
+}  // namespace heavesim::test_joint_stop_events

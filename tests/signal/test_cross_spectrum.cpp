@@ -13,7 +13,9 @@
 #include "signal/cross_spectrum.hpp"
 #include "tests/signal/random_signals.hpp"
 
-namespace heavesim::stats {
+// A namespace of its own: the unity build compiles this file together with others
+// (top CMakeLists.txt), whose file-local names must not meet these.
+namespace heavesim::stats::test_cross_spectrum {
 namespace {
 
 using testing::RandomSource;
@@ -112,4 +114,4 @@ TEST(CrossSpectrum, RecordsOfUnequalLengthOrTooShortAreRefused) {
 }
 
 }  // namespace
-}  // namespace heavesim::stats
+}  // namespace heavesim::stats::test_cross_spectrum

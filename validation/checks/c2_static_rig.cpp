@@ -16,7 +16,7 @@ namespace heavesim::validation {
 namespace {
 
 // cases/rig/parameters.yaml
-constexpr double g = 9.81, m_crown = 30000, m_tb = 25000, m_td = 45000, m_string = 190000;
+constexpr double m_crown = 30000, m_tb = 25000, m_td = 45000, m_string = 190000;
 constexpr double buoyancy = 1025.0 / 7850.0 * m_string * g;
 
 struct Expected {

@@ -27,9 +27,7 @@ namespace heavesim::validation {
 namespace {
 
 using namespace heavesim::hydro;
-constexpr double rho = 1025.0, g = 9.81, semisub_mass = samples::mss_semisub_mass;  // semisub.frc
-
-double relative(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
+constexpr double rho = 1025.0, semisub_mass = samples::mss_semisub_mass;  // semisub.frc
 
 std::string semisub_base() {
   const std::string first = project_file("data/mss_semisub/semisub.1");

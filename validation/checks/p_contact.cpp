@@ -17,8 +17,6 @@ namespace heavesim::validation {
 
 namespace {
 
-constexpr double g = 9.81;
-
 struct Stepped {
   samples::ContactScene scene;
   Data data;

@@ -38,8 +38,6 @@ double channel(const MultibodySystem& system, const std::string& element, const 
   return std::nan("");
 }
 
-double relative(double value, double expected) { return std::abs(value - expected) / std::abs(expected); }
-
 }  // namespace
 
 std::vector<ValidationRow> check_s1_spring_crane() {

@@ -1,6 +1,7 @@
 #pragma once
 // The validation set (docs/validation.md): each check compares heavesim with something
 // it did not compute itself and reports max error against a stated tolerance.
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -9,6 +10,18 @@
 #include "app/run/simulation_run.hpp"
 
 namespace heavesim::validation {
+
+/// Gravity in every validation case and sample model [m/s^2].
+inline constexpr double g = 9.81;
+/// The gas spring of cases/validation/c1_passive_compensator.yaml and c3_gas_spring.yaml:
+/// piston area A [m^2], gas volume at mid-stroke V0 [m^3], polytropic exponent n,
+/// atmospheric pressure p_atm [Pa].
+namespace default_gas_spring {
+inline constexpr double A = 0.1735, V0 = 60.0, n = 1.4, p_atm = 101325.0;
+}
+
+/// |value - reference| / |reference|.
+inline double relative(double value, double reference) { return std::abs(value - reference) / std::abs(reference); }
 
 struct ValidationRow {
   std::string check;     // e.g. "K1"
