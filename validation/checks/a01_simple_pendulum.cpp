@@ -34,10 +34,10 @@ PendulumErrors compare_pendulum(const std::vector<std::string>& overrides) {
     energies.push_back(mechanical_energy(system));
   });
   // Released at theta0 = pi/2 from the downward vertical, towards +x.
-  const std::vector<Eigen::Vector2d> exact = oracle::pendulum_mass_positions(std::numbers::pi / 2, 1.0, 9.81, times);
+  const std::vector<Eigen::Vector2d> exact = oracle::pendulum_mass_positions(std::numbers::pi / 2, 1.0, g, times);
   PendulumErrors errors;
   errors.position = oracle::iftomm_max_error(positions, exact);
-  const double energy_scale = 1.0 * 9.81 * 1.0;  // m g L, J
+  const double energy_scale = 1.0 * g * 1.0;  // m g L, J
   for (double energy : energies)
     errors.energy_drift = std::max(errors.energy_drift, std::abs(energy - energies.front()) / energy_scale);
   return errors;

@@ -43,7 +43,7 @@ BricardRun run_bricard(const std::vector<std::string>& overrides) {
     result.p3_largest_motion = std::max(result.p3_largest_motion, (p3 - p3_start).norm());
     energies.push_back(mechanical_energy(system));
   });
-  const double energy_scale = 5.0 * 1.0 * 9.81 * 1.0;
+  const double energy_scale = 5.0 * 1.0 * g * 1.0;
   for (double energy : energies)
     result.energy_drift = std::max(result.energy_drift, std::abs(energy - energies.front()) / energy_scale);
   return result;

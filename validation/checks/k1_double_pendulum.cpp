@@ -13,7 +13,7 @@ namespace heavesim::validation {
 
 std::vector<ValidationRow> check_k1_double_pendulum() {
   // Deliberately unequal links so that no term hides behind a symmetry.
-  const oracle::DoublePendulumParameters p{1.3, 0.7, 1.1, 0.45, 0.6, 0.11, 0.05, 9.81};
+  const oracle::DoublePendulumParameters p{1.3, 0.7, 1.1, 0.45, 0.6, 0.11, 0.05, g};
   const Model model = samples::planar_chain({{p.L1, p.m1, p.a1, p.I1}, {1.0, p.m2, p.a2, p.I2}}, p.g);
   Data data(model);
   std::mt19937_64 random(20261122);

@@ -51,7 +51,7 @@ std::vector<ValidationRow> check_l5_overconstrained_four_bar() {
     if (outcome.completed) {
       const std::vector<double> later(times.begin() + 1, times.end());
       const std::vector<double> angles =
-          oracle::parallelogram_crank_angles(first_moment, second_moment, 9.81, 0.0, 3.0, later, 1e-13);
+          oracle::parallelogram_crank_angles(first_moment, second_moment, g, 0.0, 3.0, later, 1e-13);
       tip_error = 0.0;
       for (std::size_t k = 0; k < later.size(); ++k)
         tip_error = std::max(tip_error, (tips[k + 1] - Vector3(std::sin(angles[k]), -std::cos(angles[k]), 0.0)).norm());

@@ -39,7 +39,7 @@ NFourBarErrors run_n_four_bar(const std::string& case_path, int windows) {
   errors.branch_error = branch_error;
   if (outcome.completed) {
     std::vector<double> later(times.begin() + 1, times.end());
-    const std::vector<double> angles = oracle::four_bar_crank_angles(windows, 9.81, later, 1e-13);
+    const std::vector<double> angles = oracle::four_bar_crank_angles(windows, g, later, 1e-13);
     for (std::size_t k = 0; k < later.size(); ++k) {
       const Vector3 exact(-std::sin(angles[k]), std::cos(angles[k]), 0.0);
       errors.tip_error = std::max(errors.tip_error, (tip_positions[k + 1] - exact).norm());
