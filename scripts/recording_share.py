@@ -9,7 +9,7 @@ and classifies every sample of the main thread by the frames on its stack:
 integration (Integrator::advance_to, initialize, make_integrator), set-up (load_case,
 build_scene) and everything else run_command does, which is recording. The share is of
 CPU samples, so it does not depend on the machine's speed between runs, but it counts
-only the main thread (the block writer and the statistics worker run beside it); the
+only the main thread (the helper threads, reported beside it, run on the other core); the
 wall-time proxy of docs/performance.md (a run with 7 samples against the full one)
 leaves out the recording's fixed cost, which the 7-sample run pays too.
 """
@@ -31,6 +31,15 @@ DETAILS = [
     ("per-sample evaluation (MultibodySystem::evaluate)", "MultibodySystem::evaluate"),
     ("per-sample channels (Recorder::record_evaluation)", "Recorder::record_evaluation"),
     ("end of run (Recorder::finish)", "Recorder::finish"),
+]
+# The helper threads, by the job on their stacks (app/output/background_worker.hpp).
+# The compiler inlines the jobs themselves (record_batch, write_last_blocks) into the
+# worker's lambda: what they call names them.
+HELPERS = [
+    ("samples' evaluation (MultibodySystem::evaluate, Recorder::record_evaluation)",
+     ("MultibodySystem::evaluate", "Recorder::record_evaluation", "Recorder::record_batch")),
+    ("block statistics (Recorder::add_block_statistics)", ("Recorder::add_block_statistics",)),
+    ("block writes (ResultFile::write_rows)", ("ResultFile::write_rows", "ResultFile::write_last_blocks")),
 ]
 
 
@@ -70,10 +79,14 @@ def main():
                         "sh", "-c", loop], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         text = subprocess.run(["perf", "script", "-i", data, "-F", "comm,tid,ip,sym"], check=True,
                               capture_output=True, text=True).stdout
-    shares, details, total = collections.Counter(), collections.Counter(), 0
+    shares, details, helpers, total = collections.Counter(), collections.Counter(), collections.Counter(), 0
     for _, frames in stacks(text):
         if not any("heavesim::run_command" in frame for frame in frames):
-            continue  # another thread, or a stack perf could not unwind
+            # A helper thread's (counted beside), or a stack perf could not unwind.
+            name = next((name for name, keys in HELPERS if any(k in frame for frame in frames for k in keys)), None)
+            if name:
+                helpers[name] += 1
+            continue
         total += 1
         part = next((name for name, keys in PARTS if any(k in f for f in frames for k in keys)), "recording")
         shares[part] += 1
@@ -88,6 +101,9 @@ def main():
     print("  of which, in the recording:")
     for name, _ in DETAILS:
         print(f"  {100.0 * details[name] / total:5.1f} %  {name}")
+    print("  beside the main thread, CPU on the helper threads, in % of the main thread's:")
+    for name, _ in HELPERS:
+        print(f"  {100.0 * helpers[name] / total:5.1f} %  {name}")
 
 
 if __name__ == "__main__":

@@ -47,7 +47,7 @@ class BodyLoad : public ForceElement {
     forces.external_force_world[point_.link].angular() += moment;
   }
   /// Where the point is, and (body frame) how the body is turned.
-  ElementDependencies dependencies() const override { return {depends_on_time_, true, false, false}; }
+  ElementDependencies dependencies() const override { return {depends_on_time_, true, false, false, false}; }
   /// 0: a follower or time-varying load is not conservative; its work shows as a change
   /// of the total energy (as a joint torque's does).
   double potential_energy(const Model&, const Data&, Eigen::Ref<const VectorX>) const override { return 0.0; }

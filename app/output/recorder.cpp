@@ -1,13 +1,20 @@
 #include "app/output/recorder.hpp"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
+#include "kernel/integrators/integrator.hpp"
 #include "signal/statistic_fields.hpp"
 
 namespace heavesim {
@@ -82,6 +89,14 @@ std::string multiplier_unit(ConstraintRowKind kind) {
     default:
       return "N or N m";
   }
+}
+
+/// The cores this process may run on: its affinity mask (a run pinned to one core, by
+/// `taskset` or a cluster's scheduler, has no second core to evaluate on), else the machine's.
+int usable_cores() {
+  cpu_set_t cores;
+  if (sched_getaffinity(0, sizeof cores, &cores) == 0) return CPU_COUNT(&cores);
+  return static_cast<int>(std::thread::hardware_concurrency());
 }
 
 }  // namespace
@@ -341,8 +356,71 @@ void Recorder::define_element_channels() {
 }
 
 void Recorder::record(double t, const VectorX& y) {
-  scene_.system->evaluate(t, y, needs_reactions_);
-  record_evaluation(t, y);
+  if (!evaluates_beside_) {
+    scene_.system->evaluate(t, y, needs_reactions_);
+    record_evaluation(t, y);
+    return;
+  }
+  SampleBatch& batch = batches_[filling_];
+  batch.times[batch.count] = t;
+  batch.states[batch.count] = y;  // the same size: no allocation
+  if (++batch.count < evaluation_batch) return;
+  settle_evaluation();  // the batch before is recorded: the worker takes this one
+  filling_ = 1 - filling_;
+  evaluation_worker_.start();
+}
+
+std::string Recorder::why_samples_in_line(const CaseDefinition& definition, const Scene& scene) {
+  const long samples = output_sample_count(definition.solver, definition.output.interval);
+  if (samples <= 4 * evaluation_batch)
+    return fmt::format("{} samples, too few to repay a second build of the scene", samples);
+  if (usable_cores() < 2) return "one core to run on";
+  for (const std::unique_ptr<ForceElement>& element : scene.system->force_elements())
+    if (element->dependencies().history)
+      return fmt::format("force element '{}' depends on its evaluations before (ElementDependencies::history)",
+                         element->name());
+  // What the integrated system's Data keeps from one evaluation to the next, a copy's would
+  // not: the rows the ODE form sets aside as redundant (kernel/system/ode_form.cpp) and the
+  // joint stops' active rows (events).
+  if (!scene.assembly.rank.redundant_rows.empty() && integrates_the_ode_form(definition.solver.integrator.method))
+    return "redundant loop constraint rows, which an explicit method sets aside step by step";
+  const std::vector<Constraint>& constraints = scene.system->model().constraints;
+  const auto stop = std::find_if(constraints.begin(), constraints.end(),
+                                 [](const Constraint& constraint) { return constraint.is_unilateral(); });
+  if (stop != constraints.end()) return fmt::format("joint stop '{}', active or not by events", stop->name);
+  return "";
+}
+
+void Recorder::evaluate_on_second_thread() {
+  if (samples_ > 0) throw std::logic_error("Recorder: evaluate_on_second_thread after the first sample");
+  for (SampleBatch& batch : batches_) {
+    batch.times.assign(evaluation_batch, 0.0);
+    batch.states.assign(evaluation_batch, VectorX::Zero(scene_.system->size()));
+  }
+  evaluates_beside_ = true;
+}
+
+void Recorder::record_batch(SampleBatch& batch) {
+  const long count = std::exchange(batch.count, 0);
+  for (long k = 0; k < count; ++k) {
+    scene_.system->evaluate(batch.times[k], batch.states[k], needs_reactions_);
+    record_evaluation(batch.times[k], batch.states[k]);
+  }
+}
+
+void Recorder::settle_evaluation() {
+  try {
+    evaluation_worker_.wait();
+  } catch (...) {
+    batches_[filling_].count = 0;
+    throw;
+  }
+}
+
+void Recorder::record_queued_samples() {
+  if (!evaluates_beside_) return;
+  settle_evaluation();
+  record_batch(batches_[filling_]);  // in line: the worker is idle
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
@@ -403,6 +481,7 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   // fail (a CSV write).
   ++block_samples_;
   ++samples_;
+  last_sample_time_ = t;
   if (ends_block) hand_over_block();
   if (csv_) csv_->write_row(csv_row_);
   require_stages(system.data(), stages, t, evaluation);
@@ -482,6 +561,7 @@ double Recorder::channel_maximum(const std::string& path) const {
 }
 
 void Recorder::finish() {
+  record_queued_samples();
   block_worker_.wait();
   if (block_samples_ > 0) {
     // The block being built, as far as it goes: the file holds the same samples.

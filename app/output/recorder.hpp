@@ -1,7 +1,9 @@
 #pragma once
 // Decides which channels a case records and writes them at every output time:
 // only what the case asks for is evaluated (reactions cost one extra pass).
+#include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,8 +34,26 @@ class Recorder {
   Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
            const std::vector<ExtraChannel>& extra_channels = {});
 
-  /// Evaluates the scene at (t, y) and records one sample of every channel.
+  /// Evaluates the scene at (t, y) and records one sample of every channel; after
+  /// evaluate_on_second_thread(), queues (t, y) for that thread instead.
   void record(double t, const VectorX& y);
+  /// Why a run of `definition` on `scene` must evaluate its samples in line, on the
+  /// integrated scene; "" when they may be evaluated on a second build of the scene, on a
+  /// second thread: the process has a second core, the run is long enough to repay a
+  /// second build, and every load is a function of (t, y) alone (no element depends on
+  /// the evaluations before, ElementDependencies::history; no constraint rows chosen or
+  /// switched during the run), so the copy gives the numbers the integrated scene would.
+  static std::string why_samples_in_line(const CaseDefinition& definition, const Scene& scene);
+  /// From here on, record() copies (t, y) into a batch and a second thread evaluates the
+  /// batches and records them, in order, while the caller integrates on
+  /// (docs/performance.md, "The samples evaluated beside the integration"). The
+  /// recorder's scene must then be its own: a second build of the case that nothing
+  /// else evaluates. A failure of a sample (NumericalError, OutputError) is thrown by a
+  /// later record() or by record_queued_samples(); the samples after it are dropped.
+  void evaluate_on_second_thread();
+  /// Records every sample record() has queued, throwing a failure among them: call at the
+  /// end of a run (finish() does, but a failure there is no longer the run's).
+  void record_queued_samples();
   /// Records one sample of the system's current evaluation at (t, y), made by the caller
   /// (a kinematic analysis: MultibodySystem::evaluate_prescribed, with reactions when
   /// needs_reactions()).
@@ -46,6 +66,8 @@ class Recorder {
   void finish();
 
   long samples() const { return samples_; }
+  /// Time [s] of the last sample recorded (in the file and the statistics), NaN before the first.
+  double last_sample_time() const { return last_sample_time_; }
   /// Largest value recorded in column 0 of a channel, or NaN if there is no such channel
   /// (after finish(): the statistics take the samples a block at a time).
   double channel_maximum(const std::string& path) const;
@@ -111,6 +133,18 @@ class Recorder {
   void define_driver_channels();
   /// /forces/<element>/<channel> for every force element that has output channels.
   void define_element_channels();
+  /// The samples queued for the second thread: (t, y) in order.
+  struct SampleBatch {
+    std::vector<double> times;
+    std::vector<VectorX> states;  // sized once by evaluate_on_second_thread()
+    long count = 0;
+  };
+  /// Evaluates and records the batch's samples in order (on the evaluation thread, or in
+  /// line by record_queued_samples()); the batch is empty after, even when one fails.
+  void record_batch(SampleBatch& batch);
+  /// Waits for the batch in hand on the evaluation thread; if it failed, the batch being
+  /// filled is dropped (its samples come after the failure) and the failure thrown.
+  void settle_evaluation();
 
   Scene& scene_;
   ResultFile* file_;
@@ -128,6 +162,7 @@ class Recorder {
   /// otherwise): computed once a sample for the body's position, orientation and velocity.
   AlignedVector<Transform> body_frames_;
   long samples_ = 0;
+  double last_sample_time_ = std::numeric_limits<double>::quiet_NaN();
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
   bool energy_is_conserved_ = false;
   struct SampleEnergy {
@@ -147,6 +182,17 @@ class Recorder {
   BackgroundWorker block_worker_{[this] {
     add_block_statistics(true, static_cast<long>(ResultFile::block_rows), handed_window_first_row_);
   }};
+  // The samples evaluated beside the integration (evaluate_on_second_thread): this thread
+  // fills batches_[filling_] while the evaluation thread records the other one, the
+  // whole recorder's state but the batch being filled being its own until
+  // settle_evaluation(). 256 samples a batch: a hand-over per ~1 ms of evaluation, and
+  // the run's end waits for at most one batch. Declared after block_worker_, which its job
+  // starts: ended first.
+  static constexpr long evaluation_batch = 256;
+  bool evaluates_beside_ = false;
+  std::array<SampleBatch, 2> batches_;
+  int filling_ = 0;
+  BackgroundWorker evaluation_worker_{[this] { record_batch(batches_[1 - filling_]); }};
 };
 
 }  // namespace heavesim

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "app/case/case_definition.hpp"
+#include "app/output/recorder.hpp"
 #include "cli/commands/commands.hpp"
 #include "app/scene/scene.hpp"
 
@@ -57,6 +58,10 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
   fmt::print("outputs every {:g} s:{}{}{}{}\n", output.interval, output.bodies ? " bodies" : "",
              output.joints ? " joints" : "", output.reactions ? " reactions (one extra RNEA pass per sample)" : "",
              output.energy ? " energy" : "");
+  const std::string in_line = Recorder::why_samples_in_line(definition, scene);
+  fmt::print("  samples evaluated {}\n", in_line.empty() ? "beside the integration, on a second build of the scene "
+                                                           "(a thread of their own)"
+                                                         : "in line: " + in_line);
   fmt::print("state size {}: evaluated per step: kinematics, {}, {}\n", scene.system->size(),
              integrator.method == IntegrationMethod::contact
                  ? "RNEA bias, CRBA and its tree-sparse L^T L, one complementarity problem of impulses over the "

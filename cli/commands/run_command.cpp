@@ -35,6 +35,11 @@ void close_incomplete(ResultFile& file, Recorder& recorder, const IntegratorStat
   file.close();
 }
 
+/// The time [s] the recorded samples reach: the last one's, the start before the first.
+double recorded_until(const Recorder& recorder, const SolverSettings& solver) {
+  return recorder.samples() > 0 ? recorder.last_sample_time() : solver.t_start;
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options) {
@@ -63,12 +68,23 @@ int run_command(const RunOptions& options) {
     create_parent_directory(csv_path, "CSV file");
     csv.emplace(csv_path);
   }
-  Recorder recorder(definition, scene, &file, csv ? &*csv : nullptr);
+  // The samples are evaluated on a second build of the scene, on a second thread beside
+  // the integration, where that gives the same numbers (Recorder::why_samples_in_line).
+  // Its case is loaded again: the two scenes share nothing (an expression of t, a
+  // driver's or a load's, keeps its evaluation workspace).
+  std::optional<CaseDefinition> recording_definition;
+  std::optional<Scene> recording_scene;
+  if (Recorder::why_samples_in_line(definition, scene).empty()) {
+    recording_definition.emplace(load_case(options.case_path, options.overrides, options.allow_large_runs));
+    recording_scene.emplace(build_scene(*recording_definition));
+  }
+  Recorder recorder(recording_definition ? *recording_definition : definition,
+                    recording_scene ? *recording_scene : scene, &file, csv ? &*csv : nullptr);
+  if (recording_scene) recorder.evaluate_on_second_thread();
   std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator, *scene.system);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
   ProgressLine progress(solver.t_start, solver.t_end, !options.quiet);
 
-  double last_sample_time = solver.t_start;
   RunOutcome outcome;
   try {
     file.flush();  // the layout is on disk: the file appears under its name
@@ -76,12 +92,24 @@ int run_command(const RunOptions& options) {
       outcome = run_simulation(scene, solver, definition.output.interval, *integrator,
                                [&](double t, const VectorX& y) {
                                  recorder.record(t, y);
-                                 last_sample_time = t;
                                  progress.update(t);
                                  return StopSignals::received() == 0;
                                });
-    } catch (const NumericalError& error) {
+      try {
+        recorder.record_queued_samples();
+      } catch (const NumericalError& error) {
+        throw integrator->explain(error);  // as run_simulation explains a sample's failure
+      }
+    } catch (const NumericalError& integration_error) {
       progress.clear();
+      // The samples before the failure still queued for the recorder's thread; a failure
+      // among them came first, and is the one to report.
+      NumericalError error = integration_error;
+      try {
+        recorder.record_queued_samples();
+      } catch (const NumericalError& earlier) {
+        error = integrator->explain(earlier);
+      }
       if (csv) csv->close();
       record_failure(file, error);
       close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(),
@@ -89,7 +117,8 @@ int run_command(const RunOptions& options) {
       fmt::print(stderr,
                  "heavesim: numerical failure in case '{}' at t = {:.6g} s: {}\n  suggestion: {}\n"
                  "  results up to t = {:.6g} s are in {} (complete = 0)\n",
-                 definition.name, error.time(), error.what(), error.suggestion(), integrator->time(), output_path);
+                 definition.name, error.time(), error.what(), error.suggestion(), recorded_until(recorder, solver),
+                 output_path);
       return 3;
     }
     progress.clear();
@@ -111,12 +140,13 @@ int run_command(const RunOptions& options) {
     fmt::print(stderr, "heavesim: {}\n", error.what());
     if (error.path() != output_path) {
       // The CSV failed; the result file is still whole: close it as a stopped run's.
-      close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(), last_sample_time - solver.t_start);
+      close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(),
+                       recorded_until(recorder, solver) - solver.t_start);
       fmt::print(stderr, "  the run stopped at t = {:.6g} s; results up to there are in {} (complete = 0)\n",
-                 last_sample_time, output_path);
+                 recorded_until(recorder, solver), output_path);
     } else if (file.published()) {
       fmt::print(stderr, "  the run stopped at t = {:.6g} s; {} keeps the first {} samples (samples_written, complete = 0)\n",
-                 last_sample_time, output_path, file.samples_written());
+                 recorded_until(recorder, solver), output_path, file.samples_written());
     } else {
       fmt::print(stderr, "  no result file was written\n");
     }

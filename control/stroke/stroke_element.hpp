@@ -28,6 +28,8 @@ class StrokeElement : public ForceElement {
                std::span<double> values) const override {
     table_.fill(evaluate(t, model, data, z, nullptr), values);
   }
+  /// Everything but history: a compensator's evaluation is a function of (t, q, v, z) alone.
+  ElementDependencies dependencies() const override { return {true, true, true, true, false}; }
 
   /// Everything the element computes at time t [s] for internal states z on the
   /// current stages; fills zdot (state_size() entries) when it is not null.

@@ -23,7 +23,7 @@ class FroudeKrylovForce : public ForceElement {
     forces.external_force_world[link_] += Force(load.moment, load.force);  // moment already about the world origin
   }
   /// Time (the incident wave) and the body's pose.
-  ElementDependencies dependencies() const override { return {true, true, false, false}; }
+  ElementDependencies dependencies() const override { return {true, true, false, false, false}; }
 
  private:
   std::string name_;

@@ -44,7 +44,7 @@ class LinearRestoring : public ForceElement {
     add_load(forces, link_, m.X_world_body.translation(), load);
   }
   /// The body's pose only.
-  ElementDependencies dependencies() const override { return {false, true, false, false}; }
+  ElementDependencies dependencies() const override { return {false, true, false, false, false}; }
   /// V = xi^T K xi / 2 - f0 . xi [J], whose -dV/dxi is the load for a symmetric K (the
   /// small-motion potential; buoyancy's f0 . xi is the work against the constant
   /// buoyancy, the weight's own potential being the kernel's). The quadratic form sees
@@ -76,7 +76,7 @@ class BodyDamping : public ForceElement {
     add_load(forces, link_, m.X_world_body.translation(), load);
   }
   /// The body's pose (the reference point) and velocity.
-  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  ElementDependencies dependencies() const override { return {false, true, true, false, false}; }
 
  private:
   std::string name_;

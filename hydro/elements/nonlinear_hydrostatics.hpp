@@ -15,7 +15,7 @@ class NonlinearHydrostatics : public ForceElement {
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
   /// The body's pose only (the still-water surface).
-  ElementDependencies dependencies() const override { return {false, true, false, false}; }
+  ElementDependencies dependencies() const override { return {false, true, false, false, false}; }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override;

@@ -10,7 +10,8 @@
 // velocity; older ones the trapezoidal rule on the stored samples. The buffer is
 // sized in the constructor; apply() does not allocate. The body starts from rest
 // (older samples are zero); an evaluation back at t <= 0 after a run starts afresh.
-// Not thread-safe (the buffer is mutable state of a const apply()).
+// Not thread-safe (the buffer is mutable state of a const apply()); its load depends on the
+// evaluations before (ElementDependencies::history, the default it keeps).
 #include "hydro/elements/body_motion.hpp"
 #include "hydro/radiation/retardation_kernel.hpp"
 

@@ -21,7 +21,7 @@ class RadiationMemory : public ForceElement {
   void state_derivative(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                         Eigen::Ref<VectorX> zdot) const override;
   /// The load reads z at the body's reference point; dz/dt reads z and the body velocity.
-  ElementDependencies dependencies() const override { return {false, true, true, true}; }
+  ElementDependencies dependencies() const override { return {false, true, true, true, false}; }
   /// The memory load -C z [WAMIT order] for state z.
   Vector6 load(Eigen::Ref<const VectorX> z) const;
 

@@ -41,7 +41,7 @@ class WaveExcitation : public ForceElement {
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
   /// Time, and the body's reference point (where the load acts).
-  ElementDependencies dependencies() const override { return {true, true, false, false}; }
+  ElementDependencies dependencies() const override { return {true, true, false, false, false}; }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override;

@@ -20,7 +20,7 @@ class ContactForces : public ForceElement {
   const ContactModel& contact_model() const { return contacts_; }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
-  ElementDependencies dependencies() const override { return {false, false, false, false}; }
+  ElementDependencies dependencies() const override { return {false, false, false, false, true}; }
   const std::vector<ElementChannel>& channels() const override { return channels_; }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override;

@@ -44,6 +44,11 @@ struct ElementDependencies {
   bool configuration = true;   // q, through the position stage (where a point or body is)
   bool velocity = true;        // v, through the velocity stage (world velocities depend on q too)
   bool element_states = true;  // its own z
+  /// The evaluations before this one: a load that is not a function of (t, q, v, z) alone
+  /// (a convolution over the velocities it stored at earlier calls; contact loads a
+  /// stepper set). Without it, a second copy of the system gives the same loads at the
+  /// same (t, y), so the recorder may evaluate its samples on one (app/output/recorder.hpp).
+  bool history = true;
 };
 
 /// A force element may own internal states z with dz/dt = g(t, q, v, z)

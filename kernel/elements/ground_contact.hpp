@@ -47,7 +47,7 @@ class GroundContact : public ForceElement {
     if (s.force > 0.0) forces.add_force_at_point(point_.link, s.position, Vector3(0.0, 0.0, s.force));
   }
   /// The point's place and velocity.
-  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  ElementDependencies dependencies() const override { return {false, true, true, false, false}; }
   /// V = k d^2 / 2 [J] while the point penetrates (d > 0), 0 when lifted off: the
   /// spring part of the contact (the damper stores nothing).
   double potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const override {

@@ -33,7 +33,7 @@ class JointTorque : public ForceElement {
 
   /// Only the time, and only when tau(t) is not constant: the load is the same in every
   /// configuration and at every speed.
-  ElementDependencies dependencies() const override { return {depends_on_time_, false, false, false}; }
+  ElementDependencies dependencies() const override { return {depends_on_time_, false, false, false, false}; }
 
   /// 0: a motor's torque is work put in from outside (a time-varying one is not even
   /// conservative), so the energy channels show it as a change of the total energy

@@ -15,7 +15,7 @@ class PointForce : public ForceElement {
     forces.add_force_at_point(point_.link, point_.position_world(data), force_world_);
   }
   /// The point's place (the moment about the world origin).
-  ElementDependencies dependencies() const override { return {false, true, false, false}; }
+  ElementDependencies dependencies() const override { return {false, true, false, false, false}; }
   /// A constant world force is conservative: V = -F . p_world [J], p the point's world
   /// position (zero where the point is at the world origin).
   double potential_energy(const Model&, const Data& data, Eigen::Ref<const VectorX>) const override {

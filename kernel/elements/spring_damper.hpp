@@ -21,7 +21,7 @@ class SpringDamper : public ForceElement {
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override;
   /// The end points' places and velocities.
-  ElementDependencies dependencies() const override { return {false, true, true, false}; }
+  ElementDependencies dependencies() const override { return {false, true, true, false, false}; }
   /// V = k (l - l0)^2 / 2 [J].
   double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const override;
   /// Length [m], its rate [m/s] and the tension [N] at the current stages.

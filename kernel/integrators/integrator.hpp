@@ -25,6 +25,12 @@ enum class IntegrationMethod {
 inline bool is_fixed_step(IntegrationMethod method) {
   return method == IntegrationMethod::rk4 || method == IntegrationMethod::hht || method == IntegrationMethod::contact;
 }
+/// Whether the method integrates the ODE form (rk4, dopri5, verner6, fehlberg8), which
+/// sets a mechanism's redundant constraint rows aside step by step (kernel/system/ode_form.cpp).
+inline bool integrates_the_ode_form(IntegrationMethod method) {
+  return method == IntegrationMethod::rk4 || method == IntegrationMethod::dopri5 ||
+         method == IntegrationMethod::verner6 || method == IntegrationMethod::fehlberg8;
+}
 /// Linear solver for IDA's Newton iterations.
 enum class LinearSolver {
   dense,  // dense LU with partial pivoting (Eigen, in a SUNDIALS linear solver: dense_lu_linear_solver.hpp)

@@ -33,7 +33,7 @@ MultibodySystem::MultibodySystem(std::shared_ptr<const Model> model, SystemSetti
       dynamic_residual_(VectorX::Zero(model_->nv)) {
   bool joint_elements = false;
   for (int i = 1; i < model_->num_links(); ++i) joint_elements |= model_->joints[i].spring || model_->joints[i].limits;
-  applied_dependencies_ = {false, joint_elements, joint_elements, false};
+  applied_dependencies_ = {false, joint_elements, joint_elements, false, false};
   // Every evaluation of a CRBA system, or of one with loops, forms M and its factor (an
   // ABA system without loops never has them).
   if (settings_.method == ForwardDynamicsMethod::composite_rigid_body || model_->has_constraints())
@@ -48,6 +48,7 @@ void MultibodySystem::add_force_element(std::unique_ptr<ForceElement> element) {
   applied_dependencies_.configuration |= d.configuration;
   applied_dependencies_.velocity |= d.velocity;
   applied_dependencies_.element_states |= d.element_states && element->state_size() > 0;
+  applied_dependencies_.history |= d.history;
   elements_.push_back(std::move(element));
 }
 

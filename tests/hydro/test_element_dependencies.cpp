@@ -13,6 +13,7 @@
 #include <string>
 
 #include "hydro/elements/linear_body_loads.hpp"
+#include "hydro/elements/radiation_convolution.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/joint_torque.hpp"
@@ -81,6 +82,15 @@ class ElementDependencyTest : public ::testing::Test {
     }
     if (!declared.element_states && z.size() > 0)
       expect_same(base, evaluate(element, 1.0, q_, v_, z.array() + 1.0), element.name() + ": own states");
+    if (!declared.history) {
+      // After calls at later and earlier times, other poses and speeds, the same loads at the
+      // base state: what lets the recorder evaluate its samples on a copy of the system.
+      VectorX q = q_, v = v_;
+      q << 0.9, 0.1, -0.6, std::cos(0.9), 0.0, 0.0, std::sin(0.9);
+      v << 1.2, -0.8, 0.1, -0.3, 0.6, 2.0;
+      for (const double t : {40.0, 0.25, 40.5, 3.0}) evaluate(element, t, q, v, z.array() + 0.5);
+      expect_same(base, evaluate(element, 1.0, q_, v_, z), element.name() + ": history");
+    }
   }
 
   std::shared_ptr<const Model> model_;
@@ -127,6 +137,25 @@ TEST_F(ElementDependencyTest, LinearHydroLoadsReadOnlyWhatTheyDeclare) {
   Vector6 quadratic;
   quadratic << 1.0, 2.0, 3.0, 0.4, 0.5, 0.6;
   check(hydro::BodyDamping("damping", 1, Matrix6::Identity() * 20.0, quadratic));
+}
+
+TEST_F(ElementDependencyTest, RadiationConvolutionDeclaresItsHistory) {
+  // The convolution's load is the integral over the velocities it stored at earlier calls:
+  // the same state after other calls gives another load, and it says so.
+  const hydro::RadiationConvolution convolution(
+      "convolution", 1, hydro::RetardationKernel{0.1, std::vector<Matrix6>(50, Matrix6::Identity() * 1e3)});
+  EXPECT_TRUE(convolution.dependencies().history);
+  const VectorX no_states;
+  const Evaluation first = evaluate(convolution, 1.0, q_, v_, no_states);
+  VectorX v = v_;
+  v << 1.2, -0.8, 0.1, -0.3, 0.6, 2.0;
+  for (const double t : {1.1, 1.2, 1.3}) evaluate(convolution, t, q_, v, no_states);
+  const Evaluation later = evaluate(convolution, 1.35, q_, v_, no_states);
+  const Evaluation fresh = evaluate(hydro::RadiationConvolution("fresh", 1, hydro::RetardationKernel{
+                                        0.1, std::vector<Matrix6>(50, Matrix6::Identity() * 1e3)}),
+                                    1.35, q_, v_, no_states);
+  EXPECT_GT(first.loads[1].linear().norm(), 0.0);
+  EXPECT_GT((later.loads[1].linear() - fresh.loads[1].linear()).norm(), 1.0);
 }
 
 }  // namespace

@@ -1,10 +1,11 @@
 """The recording threads checked by a race detector that does not share our reasoning.
 
-A run records on three threads: the integrating one, the result file's block writer and
-the recorder's block statistics (app/output/background_worker.hpp, docs/architecture.md).
-Their correctness rests on a handshake: a worker reads only the last whole block, and
-the integrating thread waits for it (settle, wait) before it touches that block or the
-HDF5 file again. Valgrind's Helgrind checks every access to memory that two threads
+A run records on four threads: the integrating one, the recorder's evaluation of the
+samples (on a second build of the scene, a batch of states at a time), the result file's
+block writer and the recorder's block statistics (app/output/background_worker.hpp,
+docs/architecture.md). Their correctness rests on a handshake: a worker reads only what
+was handed to it (a batch of states, the last whole block), and the thread that handed it
+waits for it (settle, wait) before it touches that again or the HDF5 file. Valgrind's Helgrind checks every access to memory that two threads
 share against the happens-before order that the locks, condition variables and thread
 starts and joins it observes give; an access that nothing orders is a "possible data
 race", whether or not the schedule of this run made it go wrong. It runs the threads on
@@ -64,6 +65,36 @@ class HelgrindSeesNoRace(unittest.TestCase):
         code, output, report = helgrind([TESTS_BINARY, "--gtest_filter=BackgroundWorker.*"])
         self.assert_clean(code, report)
         self.assertIn("[  PASSED  ] 4 tests", output)
+
+
+class SamplesEvaluatedBeside(unittest.TestCase):
+    def test_samples_evaluated_beside_are_those_evaluated_in_line(self):
+        # A run pinned to one core evaluates every sample on the integrating thread, on the
+        # integrated scene (Recorder::can_evaluate_beside); an ordinary one on a second
+        # build of the case, on a thread of its own. Two paths, one set of numbers. The
+        # free semi and the compensated rig: hydro loads, compensator states, reactions; the
+        # rig on a prescribed heave: a driver's expression of t, evaluated by both threads
+        # (shared, its workspace once made them disagree, and moved the integration too).
+        if len(os.sched_getaffinity(0)) < 2:
+            self.skipTest("one core: every run evaluates its samples in line")
+        cases = [DRILLING_250_S, ["cases/hydro/semisub_6dof_irregular_sea.yaml", "-q", "--set", "solver.t_end=600"],
+                 ["cases/c2_prescribed_heave/h0_passive.yaml", "-q", "--set", "solver.t_end=150"]]
+        with tempfile.TemporaryDirectory() as d:
+            for case in cases:
+                # `heavesim check` says which path each run takes.
+                check_arguments = [argument for argument in case if argument != "-q"]
+                for prefix, path in (([], "beside the integration"), (["taskset", "-c", "0"], "in line: one core")):
+                    check = subprocess.run([*prefix, BINARY, "check", *check_arguments], capture_output=True,
+                                           text=True, cwd=ROOT, timeout=60)
+                    self.assertIn("samples evaluated " + path, check.stdout, (case[0], check.stdout))
+                in_line, beside = os.path.join(d, "in_line.h5"), os.path.join(d, "beside.h5")
+                for command in (["taskset", "-c", "0", BINARY, "run", *case, "-o", in_line],
+                                [BINARY, "run", *case, "-o", beside]):
+                    run = subprocess.run(command, capture_output=True, text=True, cwd=ROOT, timeout=300)
+                    self.assertEqual(run.returncode, 0, run.stderr)
+                differences = compare_runs.differing_numbers(in_line, beside)
+                self.assertLessEqual(set(differences), {"summary@wall_time_s", "summary@real_time_factor"},
+                                     (case[0], differences))
 
 
 if __name__ == "__main__":
