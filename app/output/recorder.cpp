@@ -375,16 +375,20 @@ std::string Recorder::why_samples_in_line(const CaseDefinition& definition, cons
   if (samples <= 4 * evaluation_batch)
     return fmt::format("{} samples, too few to repay a second build of the scene", samples);
   if (usable_cores() < 2) return "one core to run on";
-  for (const std::unique_ptr<ForceElement>& element : scene.system->force_elements())
-    if (element->dependencies().history)
-      return fmt::format("force element '{}' depends on its evaluations before (ElementDependencies::history)",
-                         element->name());
+  if (scene.system->applied_dependencies().history)
+    for (const std::unique_ptr<ForceElement>& element : scene.system->force_elements())
+      if (element->dependencies().history)
+        return fmt::format("force element '{}' depends on its evaluations before (ElementDependencies::history)",
+                           element->name());
   // What the integrated system's Data keeps from one evaluation to the next, a copy's would
-  // not: the rows the ODE form sets aside as redundant (kernel/system/ode_form.cpp) and the
-  // joint stops' active rows (events).
-  if (!scene.assembly.rank.redundant_rows.empty() && integrates_the_ode_form(definition.solver.integrator.method))
-    return "redundant loop constraint rows, which an explicit method sets aside step by step";
-  const std::vector<Constraint>& constraints = scene.system->model().constraints;
+  // not: the rows the ODE form sets aside as redundant (kernel/system/ode_form.cpp), judged
+  // by it at the run's first state -- the assembled one, whose rank the scene holds, unless
+  // the run starts from a static equilibrium -- and the joint stops' active rows (events).
+  const Model& model = scene.system->model();
+  if (integrates_the_ode_form(definition.solver.integrator.method) && model.has_constraints() &&
+      (!scene.assembly.rank.redundant_rows.empty() || scene.equilibrium))
+    return "loop constraint rows an explicit method may set aside step by step (redundant ones, or a static start)";
+  const std::vector<Constraint>& constraints = model.constraints;
   const auto stop = std::find_if(constraints.begin(), constraints.end(),
                                  [](const Constraint& constraint) { return constraint.is_unilateral(); });
   if (stop != constraints.end()) return fmt::format("joint stop '{}', active or not by events", stop->name);

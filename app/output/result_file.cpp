@@ -47,7 +47,7 @@ Handle uncached_dataset_access() {
 
 ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
     : path_(path), partial_path_(path + ".partial"), reserved_samples_(reserved_samples) {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // errors are reported by return codes below
+  hdf5::report_errors_by_return_codes();
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
     throw OutputError(path_, "cannot create result file", "the path is a directory");
@@ -270,6 +270,8 @@ void ResultFile::append(int series_id, const double* row) {
 
 void ResultFile::end_sample() {
   if (++buffered_samples_ < block_rows) return;
+  // The recorder may end its samples on a thread of its own (Recorder::evaluate_on_second_thread).
+  hdf5::report_errors_by_return_codes();
   // The block goes to the block writer, which writes it while the next one is filled;
   // the one before must be on disk first (and a failure of it is thrown here).
   ready_to_write();
@@ -287,9 +289,7 @@ void ResultFile::end_sample() {
 }
 
 void ResultFile::write_last_blocks() {
-  // Debian's HDF5 is the thread-safe build: every thread has its own error stack, printed
-  // by default. A failure is reported by the return codes, as on the caller's thread.
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  hdf5::report_errors_by_return_codes();  // on this thread too
   for (Series& series : series_) write_rows(series, series.last_block.data(), handed_first_row_, block_rows);
 }
 

@@ -112,8 +112,9 @@ int run_command(const RunOptions& options) {
       }
       if (csv) csv->close();
       record_failure(file, error);
+      // A sample that failed on the recorder's thread did so before the integrator's time.
       close_incomplete(file, recorder, integrator->statistics(), progress.elapsed(),
-                       integrator->time() - solver.t_start);
+                       std::min(integrator->time(), error.time()) - solver.t_start);
       fmt::print(stderr,
                  "heavesim: numerical failure in case '{}' at t = {:.6g} s: {}\n  suggestion: {}\n"
                  "  results up to t = {:.6g} s are in {} (complete = 0)\n",

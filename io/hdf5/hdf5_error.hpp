@@ -31,6 +31,11 @@ inline herr_t record_error(unsigned depth, const H5E_error2_t* error, void* data
 }
 }  // namespace detail
 
+/// Turns off HDF5's printing of every failure's error stack on the calling thread: the
+/// callers report failures from the return codes (last_error). In Debian's thread-safe
+/// HDF5 the setting is per thread, so each thread that calls HDF5 makes it.
+inline void report_errors_by_return_codes() { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); }
+
 /// The system error of the last failed HDF5 call if it had one ("No space left on
 /// device (errno 28)"), else HDF5's own innermost message; `fallback` if the stack is empty.
 /// Clears the stack.

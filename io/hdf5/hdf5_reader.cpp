@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "hydro/data_file.hpp"
+#include "io/hdf5/hdf5_error.hpp"
 
 namespace heavesim::hdf5 {
 namespace {
@@ -94,8 +95,7 @@ std::string shape_text(const std::vector<hsize_t>& shape) {
 }
 
 Reader::Reader(std::string path, std::string kind) : path_(std::move(path)), kind_(std::move(kind)) {
-  // Errors are reported by return codes below, not by HDF5's own stack print.
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+  hdf5::report_errors_by_return_codes();
   hydro::require_readable_data_file(path_, kind_);
   if (H5Fis_hdf5(path_.c_str()) <= 0)
     throw hydro::DataError(path_, 0, "a file that is not an HDF5 file (no HDF5 signature)", kind_);

@@ -14,6 +14,8 @@
 
 #include "hydro/elements/linear_body_loads.hpp"
 #include "hydro/elements/radiation_convolution.hpp"
+#include "hydro/elements/wave_excitation.hpp"
+#include "hydro/waves/wave_spectrum.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/joint_torque.hpp"
@@ -137,6 +139,19 @@ TEST_F(ElementDependencyTest, LinearHydroLoadsReadOnlyWhatTheyDeclare) {
   Vector6 quadratic;
   quadratic << 1.0, 2.0, 3.0, 0.4, 0.5, 0.6;
   check(hydro::BodyDamping("damping", 1, Matrix6::Identity() * 20.0, quadratic));
+}
+
+TEST_F(ElementDependencyTest, WaveExcitationReadsOnlyWhatItDeclares) {
+  // Its phasors live on a grid it moves with the time asked (mutable state): the history
+  // check asks later, earlier and later again before the base time, so the grid restarts.
+  hydro::ExcitationData excitation;
+  excitation.angular_frequencies = {0.3, 0.6, 1.2};
+  excitation.headings = {0.0, M_PI / 2};
+  excitation.force.assign(2, std::vector<hydro::ComplexVector6>(3, hydro::ComplexVector6::Constant({1e5, 2e4})));
+  hydro::IrregularSeaSettings sea;
+  sea.num_components = 50;
+  sea.heading = 0.3;
+  check(hydro::WaveExcitation("waves", 1, excitation, hydro::irregular_sea(hydro::PiersonMoskowitz{2.0, 8.0}, sea)));
 }
 
 TEST_F(ElementDependencyTest, RadiationConvolutionDeclaresItsHistory) {

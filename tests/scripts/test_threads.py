@@ -33,6 +33,22 @@ import compare_runs  # noqa: E402
 DRILLING_250_S = ["cases/drilling.yaml", "-q", "--set", "solver.t_end=250", "--set", "output.evaluate_after=100"]
 
 
+def integer_attributes(path):
+    """{object@name: value} of every integer attribute in the file (the root's included)."""
+    import h5py
+    import numpy as np
+    found = {}
+    with h5py.File(path, "r") as f:
+        def collect(name, item):
+            for key, value in item.attrs.items():
+                value = np.asarray(value)
+                if value.dtype.kind in "iu":
+                    found[f"{name}@{key}"] = value.tolist()
+        collect("/", f)
+        f.visititems(collect)
+    return found
+
+
 def helgrind(command):
     """The command under Helgrind: (exit code, its output, Valgrind's report)."""
     run = subprocess.run(["valgrind", "--tool=helgrind", "--error-exitcode=9", f"--suppressions={SUPPRESSIONS}",
@@ -70,7 +86,7 @@ class HelgrindSeesNoRace(unittest.TestCase):
 class SamplesEvaluatedBeside(unittest.TestCase):
     def test_samples_evaluated_beside_are_those_evaluated_in_line(self):
         # A run pinned to one core evaluates every sample on the integrating thread, on the
-        # integrated scene (Recorder::can_evaluate_beside); an ordinary one on a second
+        # integrated scene (Recorder::why_samples_in_line); an ordinary one on a second
         # build of the case, on a thread of its own. Two paths, one set of numbers. The
         # free semi and the compensated rig: hydro loads, compensator states, reactions; the
         # rig on a prescribed heave: a driver's expression of t, evaluated by both threads
@@ -95,6 +111,8 @@ class SamplesEvaluatedBeside(unittest.TestCase):
                 differences = compare_runs.differing_numbers(in_line, beside)
                 self.assertLessEqual(set(differences), {"summary@wall_time_s", "summary@real_time_factor"},
                                      (case[0], differences))
+                # The counts too (samples written, end-stop events), which are integers.
+                self.assertEqual(integer_attributes(in_line), integer_attributes(beside), case[0])
 
 
 if __name__ == "__main__":
