@@ -14,6 +14,10 @@ struct RunOptions {
   std::vector<std::string> overrides;  // --set key=value
   bool quiet = false;
   bool allow_large_runs = false;       // --allow-large-runs: past RunLimits (app/case/case_definition.hpp)
+  /// Whether the recorder may evaluate the samples on a helper thread (where the case
+  /// allows: Recorder::why_samples_in_line). Off for the runs of a sweep or RAO that run
+  /// side by side: each already has its core, and the thread would only add its cost.
+  bool samples_beside = true;
 };
 
 int run_command(const RunOptions& options);

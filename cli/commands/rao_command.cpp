@@ -271,6 +271,7 @@ int regular_sweep(const RaoOptions& options) {
     run.case_path = options.input;
     run.output_path = (std::filesystem::path(directory) / record.result_file).string();
     run.overrides = run_overrides[i];
+    run.samples_beside = options.jobs == 1;  // runs side by side take a core each
     run_logged(run, (std::filesystem::path(directory) / "logs" / (run_name(i) + ".log")).string(), record);
     return encode(record);
   };

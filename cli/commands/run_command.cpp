@@ -74,7 +74,7 @@ int run_command(const RunOptions& options) {
   // driver's or a load's, keeps its evaluation workspace).
   std::optional<CaseDefinition> recording_definition;
   std::optional<Scene> recording_scene;
-  if (Recorder::why_samples_in_line(definition, scene).empty()) {
+  if (options.samples_beside && Recorder::why_samples_in_line(definition, scene).empty()) {
     recording_definition.emplace(load_case(options.case_path, options.overrides, options.allow_large_runs));
     recording_scene.emplace(build_scene(*recording_definition));
   }

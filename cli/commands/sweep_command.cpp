@@ -38,7 +38,7 @@ std::string check_run(const SweepPlan& plan, const PlannedRun& run) {
 }
 
 RunRecord execute_run(const SweepDefinition& sweep, const PlannedRun& run, const std::string& directory, bool resume,
-                      int worker) {
+                      bool side_by_side, int worker) {
   RunRecord record;
   record.result_file = "runs/" + run.name + ".h5";
   record.hash = run.hash;
@@ -58,6 +58,7 @@ RunRecord execute_run(const SweepDefinition& sweep, const PlannedRun& run, const
   options.case_path = run.base_case;
   options.output_path = result_path;
   options.overrides = run.overrides();
+  options.samples_beside = !side_by_side;
   run_logged(options, log_path, record);
   if (record.exit_code == 0) {
     try {
@@ -123,8 +124,11 @@ int sweep_command(const SweepOptions& options) {
   // 2. The runs.
   SweepProgress progress(count, coordinator && !options.quiet);
   TaskCallbacks runs;
+  // Runs side by side (workers, ranks) take a core each: their samples are evaluated in line.
+  const bool side_by_side = options.jobs > 1 || started_by_mpirun();
   runs.run = [&](int index, int worker) {
-    return encode(execute_run(sweep, plan.runs[static_cast<std::size_t>(index)], directory, options.resume, worker));
+    return encode(execute_run(sweep, plan.runs[static_cast<std::size_t>(index)], directory, options.resume,
+                              side_by_side, worker));
   };
   runs.crashed = [&](int index, int worker, int signal) {
     RunRecord record;
