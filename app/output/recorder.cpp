@@ -356,9 +356,8 @@ void Recorder::define_element_channels() {
 }
 
 void Recorder::record(double t, const VectorX& y) {
-  if (!evaluates_beside_) {
-    scene_.system->evaluate(t, y, needs_reactions_);
-    record_evaluation(t, y);
+  if (!evaluates_beside()) {
+    evaluate_and_record(t, y);
     return;
   }
   SampleBatch& batch = batches_[filling_];
@@ -401,15 +400,16 @@ void Recorder::evaluate_on_second_thread() {
     batch.times.assign(evaluation_batch, 0.0);
     batch.states.assign(evaluation_batch, VectorX::Zero(scene_.system->size()));
   }
-  evaluates_beside_ = true;
 }
 
 void Recorder::record_batch(SampleBatch& batch) {
   const long count = std::exchange(batch.count, 0);
-  for (long k = 0; k < count; ++k) {
-    scene_.system->evaluate(batch.times[k], batch.states[k], needs_reactions_);
-    record_evaluation(batch.times[k], batch.states[k]);
-  }
+  for (long k = 0; k < count; ++k) evaluate_and_record(batch.times[k], batch.states[k]);
+}
+
+void Recorder::evaluate_and_record(double t, const VectorX& y) {
+  scene_.system->evaluate(t, y, needs_reactions_);
+  record_evaluation(t, y);
 }
 
 void Recorder::settle_evaluation() {
@@ -422,7 +422,7 @@ void Recorder::settle_evaluation() {
 }
 
 void Recorder::record_queued_samples() {
-  if (!evaluates_beside_) return;
+  if (!evaluates_beside()) return;
   settle_evaluation();
   record_batch(batches_[filling_]);  // in line: the worker is idle
 }

@@ -145,6 +145,10 @@ class Recorder {
   /// Waits for the batch in hand on the evaluation thread; if it failed, the batch being
   /// filled is dropped (its samples come after the failure) and the failure thrown.
   void settle_evaluation();
+  /// The one evaluation and record of a sample, in line or on the evaluation thread.
+  void evaluate_and_record(double t, const VectorX& y);
+  /// After evaluate_on_second_thread(), which sizes the batches.
+  bool evaluates_beside() const { return !batches_[0].states.empty(); }
 
   Scene& scene_;
   ResultFile* file_;
@@ -189,7 +193,6 @@ class Recorder {
   // the run's end waits for at most one batch. Declared after block_worker_, which its job
   // starts: ended first.
   static constexpr long evaluation_batch = 256;
-  bool evaluates_beside_ = false;
   std::array<SampleBatch, 2> batches_;
   int filling_ = 0;
   BackgroundWorker evaluation_worker_{[this] { record_batch(batches_[1 - filling_]); }};
