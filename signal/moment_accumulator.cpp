@@ -51,10 +51,47 @@ void MomentAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t
   const BlockSums block =
       stride == 1 ? block_sums(Eigen::Map<const Eigen::ArrayXd>(x, count))
                   : block_sums(Eigen::Map<const Eigen::ArrayXd, 0, Eigen::InnerStride<>>(x, count, Eigen::InnerStride<>(stride)));
-  const double n_b = block.count, mean_b = block.mean, m2_b = block.m2, m3_b = block.m3, m4_b = block.m4;
-  const double block_minimum = std::min(minimum_, block.minimum), block_maximum = std::max(maximum_, block.maximum);
-  minimum_ = block_minimum;
-  maximum_ = block_maximum;
+  merge(count, block.minimum, block.maximum, block.mean, block.m2, block.m3, block.m4);
+}
+
+void MomentAccumulator::add_rows(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows,
+                                 std::int64_t count) {
+  if (count <= 0) return;
+  // Columns a tile at a time, so that the tile's sums stay in registers and on the stack.
+  constexpr std::ptrdiff_t tile = 8;
+  for (std::ptrdiff_t first = 0; first < width; first += tile) {
+    const std::ptrdiff_t n = std::min(tile, width - first);
+    double sum[tile] = {}, minimum[tile], maximum[tile], mean[tile], m2[tile] = {}, m3[tile] = {}, m4[tile] = {};
+    std::fill_n(minimum, tile, std::numeric_limits<double>::infinity());
+    std::fill_n(maximum, tile, -std::numeric_limits<double>::infinity());
+    for (std::int64_t r = 0; r < count; ++r) {
+      const double* row = rows + r * width + first;
+      for (std::ptrdiff_t c = 0; c < n; ++c) {
+        sum[c] += row[c];
+        minimum[c] = std::min(minimum[c], row[c]);
+        maximum[c] = std::max(maximum[c], row[c]);
+      }
+    }
+    for (std::ptrdiff_t c = 0; c < n; ++c) mean[c] = sum[c] / static_cast<double>(count);
+    // The central sums from the block's own mean: no large powers cancel (as add(x, stride, n)).
+    for (std::int64_t r = 0; r < count; ++r) {
+      const double* row = rows + r * width + first;
+      for (std::ptrdiff_t c = 0; c < n; ++c) {
+        const double deviation = row[c] - mean[c], square = deviation * deviation;
+        m2[c] += square;
+        m3[c] += square * deviation;
+        m4[c] += square * square;
+      }
+    }
+    for (std::ptrdiff_t c = 0; c < n; ++c)
+      columns[first + c].merge(count, minimum[c], maximum[c], mean[c], m2[c], m3[c], m4[c]);
+  }
+}
+
+void MomentAccumulator::merge(std::int64_t count, double minimum, double maximum, double mean_b, double m2_b,
+                              double m3_b, double m4_b) {
+  minimum_ = std::min(minimum_, minimum);
+  maximum_ = std::max(maximum_, maximum);
   if (count_ == 0) {
     count_ = count;
     mean_ = mean_b;
@@ -64,7 +101,7 @@ void MomentAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t
     return;
   }
   // Pébay (2008) eq. 3.1 with A the samples so far, B the block, delta = mean_B - mean_A.
-  const double n_a = static_cast<double>(count_), n = n_a + n_b;
+  const double n_a = static_cast<double>(count_), n_b = static_cast<double>(count), n = n_a + n_b;
   const double delta = mean_b - mean_, delta_n = delta / n;
   const double product = n_a * n_b;
   m4_ += m4_b + delta * delta_n * delta_n * delta_n * product * (n_a * n_a - product + n_b * n_b) +

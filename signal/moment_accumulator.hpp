@@ -17,6 +17,10 @@ class MomentAccumulator {
   void add(double x);
   /// The samples x[0], x[stride], ..., x[(count - 1) stride].
   void add(const double* x, std::ptrdiff_t stride, std::int64_t count);
+  /// `count` rows of a row-major block with `width` values a row, column c into
+  /// columns[c]: two passes over the block for all columns together (extremes and mean,
+  /// then the central sums) instead of six strided passes per column.
+  static void add_rows(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows, std::int64_t count);
 
   std::int64_t count() const { return count_; }
   double mean() const { return count_ > 0 ? mean_ : nan(); }
@@ -32,6 +36,8 @@ class MomentAccumulator {
   double kurtosis() const;
 
  private:
+  /// Merges a block's count, extremes, mean and central sums into the totals.
+  void merge(std::int64_t count, double minimum, double maximum, double mean, double m2, double m3, double m4);
   static double nan() { return std::numeric_limits<double>::quiet_NaN(); }
   std::int64_t count_ = 0;
   double mean_ = 0.0, m2_ = 0.0, m3_ = 0.0, m4_ = 0.0;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 #include <stdexcept>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -31,11 +32,24 @@ void ResponseStatisticsAccumulator::add(double x) {
 }
 
 void ResponseStatisticsAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t count) {
-  moments_.add(x, stride, count);
+  if (stride != 1) {
+    // A column of a row-major block: copied once, a bounded run at a time, so that the
+    // moments' reductions vectorise and the Welch segments fill a run at a time (the
+    // recorder's block statistics, docs/performance.md).
+    constexpr std::int64_t run = 4096;
+    thread_local std::vector<double> column;
+    for (std::int64_t first = 0; first < count; first += run) {
+      const std::int64_t taken = std::min(run, count - first);
+      column.resize(static_cast<std::size_t>(taken));
+      for (std::int64_t k = 0; k < taken; ++k) column[k] = x[(first + k) * stride];
+      add(column.data(), 1, taken);
+    }
+    return;
+  }
+  moments_.add(x, 1, count);
   if (options_.cycles)
-    for (std::int64_t k = 0; k < count; ++k) turning_points_.add(x[k * stride]);
-  if (welch_)
-    for (std::int64_t k = 0; k < count; ++k) welch_->add(x[k * stride]);
+    for (std::int64_t k = 0; k < count; ++k) turning_points_.add(x[k]);
+  if (welch_) welch_->add(x, count);
 }
 
 double mean_of_extreme_third(std::vector<double> values, bool largest) {

@@ -1,5 +1,6 @@
 #include "signal/welch_spectrum.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -33,6 +34,21 @@ void WelchAccumulator::add(double x) {
   const int half = static_cast<int>(buffer_.size()) / 2;
   std::copy(buffer_.begin() + half, buffer_.end(), buffer_.begin());
   filled_ = half;
+}
+
+void WelchAccumulator::add(const double* x, std::int64_t count) {
+  const std::int64_t length = static_cast<std::int64_t>(buffer_.size()), half = length / 2;
+  while (count > 0) {
+    const std::int64_t taken = std::min(count, length - filled_);
+    std::copy_n(x, taken, buffer_.begin() + filled_);
+    filled_ += static_cast<int>(taken);
+    x += taken;
+    count -= taken;
+    if (filled_ < length) return;
+    add_segment();
+    std::copy(buffer_.begin() + half, buffer_.end(), buffer_.begin());  // 50 % overlap
+    filled_ = static_cast<int>(half);
+  }
 }
 
 void WelchAccumulator::add_segment() {

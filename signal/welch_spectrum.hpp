@@ -37,6 +37,8 @@ class WelchAccumulator {
   /// `segment_length` L: even, >= 4; `sampling_frequency` fs in Hz.
   WelchAccumulator(int segment_length, double sampling_frequency);
   void add(double x);
+  /// The samples x[0..count), in time order (as many add(x) calls, copied a run at a time).
+  void add(const double* x, std::int64_t count);
   std::int64_t segments() const { return segments_; }
   int segment_length() const { return segment_transform_.length(); }
   /// f_k = k fs / L, k = 0 .. L/2 (Hz).

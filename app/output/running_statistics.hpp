@@ -23,8 +23,7 @@ class RunningStatistics {
   }
   /// `samples` samples stored row after row (one value per column a row).
   void add_rows(const double* rows, long samples) {
-    const std::ptrdiff_t width = static_cast<std::ptrdiff_t>(columns_.size());
-    for (std::ptrdiff_t c = 0; c < width; ++c) columns_[c].add(rows + c, width, samples);
+    stats::MomentAccumulator::add_rows(columns_.data(), static_cast<std::ptrdiff_t>(columns_.size()), rows, samples);
   }
   long count() const { return static_cast<long>(columns_[0].count()); }
   /// +inf before the first sample.

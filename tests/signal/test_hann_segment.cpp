@@ -1,0 +1,59 @@
+// One Welch segment's transform (signal/hann_segment.hpp) against the discrete Fourier
+// transform of the mean-removed, Hann-windowed samples written out here, for two lengths
+// whose transforms are alive at the same time and share their windows with others of the
+// same length (the recorder holds hundreds), and the window's power against its closed
+// form sum_n w_n^2 = 3 L / 8 (periodic Hann).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "signal/hann_segment.hpp"
+
+namespace heavesim::stats {
+namespace {
+
+
+std::vector<std::complex<double>> hann_windowed_dft(const std::vector<double>& x) {
+  const int L = static_cast<int>(x.size());
+  double mean = 0.0;
+  for (double v : x) mean += v / L;
+  std::vector<std::complex<double>> X(L / 2 + 1);
+  for (int k = 0; k <= L / 2; ++k)
+    for (int n = 0; n < L; ++n) {
+      const double w = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * n / L));
+      X[k] += (x[n] - mean) * w * std::polar(1.0, -2.0 * std::numbers::pi * k * n / L);
+    }
+  return X;
+}
+
+TEST(HannSegmentTransform, TransformsOfTwoLengthsAliveTogetherAreTheWindowedDft) {
+  HannSegmentTransform short_a(16), long_a(64), short_b(16);
+  const HannSegmentTransform* transforms[] = {&short_a, &long_a, &short_b};
+  for (const HannSegmentTransform* t : transforms)
+    EXPECT_NEAR(t->window_power(), 3.0 * t->length() / 8.0, 1e-12) << "length " << t->length();
+  for (int trial = 0; trial < 2; ++trial) {
+    for (HannSegmentTransform* t : {&short_a, &long_a, &short_b}) {
+      std::vector<double> x(t->length());
+      for (int n = 0; n < t->length(); ++n)
+        x[n] = 3.0 + std::sin(0.7 * n + trial + t->length()) + 0.25 * std::cos(2.3 * n * (t == &short_b ? 1.1 : 1.0));
+      const std::vector<std::complex<double>>& X = t->transform(x.data());
+      const std::vector<std::complex<double>> reference = hann_windowed_dft(x);
+      ASSERT_EQ(X.size(), reference.size());
+      for (std::size_t k = 0; k < X.size(); ++k)
+        EXPECT_LT(std::abs(X[k] - reference[k]), 1e-12 * t->length()) << "length " << t->length() << " bin " << k;
+    }
+  }
+}
+
+TEST(HannSegmentTransform, OddOrTooShortLengthsAreRefused) {
+  EXPECT_THROW(HannSegmentTransform(2), std::invalid_argument);
+  EXPECT_THROW(HannSegmentTransform(15), std::invalid_argument);
+  EXPECT_NO_THROW(HannSegmentTransform(4));
+}
+
+}  // namespace
+}  // namespace heavesim::stats
