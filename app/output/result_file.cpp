@@ -252,6 +252,9 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.extent = reserved_samples_;
   series.buffer.assign(block_rows * series.width, 0.0);
   series.last_block.assign(block_rows * series.width, 0.0);
+  series.staging_offset = staging_width_;
+  staging_width_ += series.width;
+  staging_.assign(staged_rows * staging_width_, 0.0);  // no sample before the layout stands
   series_.push_back(std::move(series));
   const int id = static_cast<int>(series_.size()) - 1;
   const hid_t object = series_[id].dataset.get();
@@ -268,8 +271,27 @@ void ResultFile::append(int series_id, const double* row) {
   std::copy_n(row, series_[series_id].width, sample_row(series_id));
 }
 
+void ResultFile::move_staged_rows_to_blocks() {
+  if (staged_samples_ == 0) return;
+  const hsize_t first = buffered_samples_ - staged_samples_;
+  for (Series& series : series_) {
+    const double* from = staging_.data() + series.staging_offset;
+    double* to = series.buffer.data() + first * series.width;
+    for (hsize_t s = 0; s < staged_samples_; ++s)
+      std::copy_n(from + s * staging_width_, series.width, to + s * series.width);
+  }
+  // The row of a sample still being built (a flush between its appends) leads the next
+  // run. A full run is moved by end_sample(), between samples: nothing is being built then.
+  if (staged_samples_ < staged_rows)
+    std::copy_n(staging_.begin() + static_cast<std::ptrdiff_t>(staged_samples_ * staging_width_), staging_width_,
+                staging_.begin());
+  staged_samples_ = 0;
+}
+
 void ResultFile::end_sample() {
-  if (++buffered_samples_ < block_rows) return;
+  ++buffered_samples_;
+  if (++staged_samples_ == staged_rows) move_staged_rows_to_blocks();
+  if (buffered_samples_ < block_rows) return;  // a block ends with a whole run, moved above
   // The recorder may end its samples on a thread of its own (Recorder::evaluate_on_second_thread).
   hdf5::report_errors_by_return_codes();
   // The block goes to the block writer, which writes it while the next one is filled;
@@ -319,14 +341,9 @@ void ResultFile::write_rows(Series& series, const double* rows_data, hsize_t fir
 
 void ResultFile::write_block(hsize_t rows) {
   settle();
+  move_staged_rows_to_blocks();  // the row of a sample still being built stays staged, first
   extend_series(rows_on_disk_ + rows);
-  for (Series& series : series_) {
-    write_rows(series, series.buffer.data(), rows_on_disk_, rows);
-    // The row of a sample still being built (a flush between its appends) leads the next block.
-    if (rows < block_rows)
-      std::copy_n(series.buffer.begin() + static_cast<std::ptrdiff_t>(rows * series.width), series.width,
-                  series.buffer.begin());
-  }
+  for (Series& series : series_) write_rows(series, series.buffer.data(), rows_on_disk_, rows);
   rows_on_disk_ += rows;
   buffered_samples_ = 0;
 }

@@ -94,13 +94,21 @@ class ResultFile {
   /// Returns its id for append(); `units` and `description` become attributes.
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
-  /// The series' row of the sample being built (max(columns, 1) values) in its block of
-  /// samples, sized once: a writer fills it in place (the recorder's channels do), then
-  /// calls end_sample(). Valid until the next end_sample() or flush().
-  double* sample_row(int series) { return series_[series].buffer.data() + buffered_samples_ * series_[series].width; }
+  /// The series' row of the sample being built (max(columns, 1) values), sized once: a
+  /// writer fills it in place (the recorder's channels do), then calls end_sample().
+  /// Valid until the next end_sample() or flush(). The rows of a sample lie side by side
+  /// (staged_rows samples, one row of every series a sample) and go to the series'
+  /// blocks a run of samples at a time: a sample's ~100 rows, each in its own block, were
+  /// as many scattered stores into memory no cache holds (docs/performance.md).
+  double* sample_row(int series) {
+    return staging_.data() + staged_samples_ * staging_width_ + series_[series].staging_offset;
+  }
   /// The series' block of samples being built, row after row: the rows of the samples
   /// buffered (buffered_samples()).
-  const double* block(int series) const { return series_[series].buffer.data(); }
+  const double* block(int series) {
+    move_staged_rows_to_blocks();
+    return series_[series].buffer.data();
+  }
   /// The series' last whole block (block_rows rows), which end_sample() handed to the
   /// block writer. It stays untouched, and may be read on another thread, until
   /// end_sample() ends the next whole block: the two blocks trade places then (no copy).
@@ -127,6 +135,10 @@ class ResultFile {
   void mark_complete();
   /// Samples a block holds (one chunk of every series: a block write fills whole chunks).
   static constexpr hsize_t block_rows = 1024;
+  /// Samples staged side by side before they go to the blocks (a divisor of block_rows:
+  /// a block ends with a run): 64 samples of the drilling case's 206 columns are 105 kB.
+  static constexpr hsize_t staged_rows = 64;
+  static_assert(block_rows % staged_rows == 0);
   /// Wall time between two commits while the run writes blocks [s].
   static constexpr double commit_interval_s = 0.25;
   /// Flushes, shrinks every series to `samples_written`, closes everything and checks
@@ -141,7 +153,14 @@ class ResultFile {
     hsize_t extent = 0;  // rows the dataset has (reserved or grown)
     std::vector<double> buffer;      // block_rows rows, row-major, sized once
     std::vector<double> last_block;  // the last whole block written, sized once
+    hsize_t staging_offset = 0;      // of its row in a staged sample
   };
+  /// The staged samples' rows into the series' blocks, each series' rows one sequential
+  /// run; the row being built (a flush between its appends) moves to the first place.
+  void move_staged_rows_to_blocks();
+  std::vector<double> staging_;   // staged_rows samples, staging_width_ values each
+  hsize_t staging_width_ = 0;     // sum of the series' widths
+  hsize_t staged_samples_ = 0;    // whole samples staged, not yet in the blocks
   /// The group or dataset at `object_path`, created as a group (with its parents) if missing.
   hdf5::Handle open_object(const std::string& object_path);
   /// Writes attribute `name` of `object` (an open group or dataset), overwriting it in

@@ -154,6 +154,46 @@ TEST(ResultFile, AKilledWriterLeavesWholeSamples) {
   std::filesystem::remove(output);
 }
 
+TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
+  // Series of widths 1, 3 and 7 (rows staged side by side, then moved to each series'
+  // block a run of 64 samples at a time, result_file.hpp), 2600 samples: two whole blocks
+  // and a partial one, with flushes between samples off the runs' and blocks' boundaries
+  // and one between the appends of a sample (whose first row must survive the flush).
+  // Value (k, series s, column c) = 1000 k + 10 s + c, read back from the file.
+  const std::string output = temporary("rows.h5");
+  const int widths[3] = {0, 3, 7};
+  const long samples = 2600;
+  {
+    ResultFile file(output, 1024);
+    int ids[3];
+    for (int s = 0; s < 3; ++s)
+      ids[s] = file.add_series("/series_" + std::to_string(s), widths[s], "-", "test pattern");
+    file.flush();
+    std::vector<double> row(7);
+    for (long k = 0; k < samples; ++k) {
+      for (int s = 0; s < 3; ++s) {
+        for (int c = 0; c < std::max(widths[s], 1); ++c) row[c] = 1000.0 * k + 10.0 * s + c;
+        file.append(ids[s], row.data());
+        if (k == 1500 && s == 0) file.flush();  // between the appends of a sample
+      }
+      file.end_sample();
+      if (k == 100 || k == 1023 || k == 1100 || k == 2047 || k == 2050) file.flush();
+    }
+    file.close();
+  }
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  for (int s = 0; s < 3; ++s) {
+    const std::vector<double> values = file.read("/series_" + std::to_string(s));
+    const int width = std::max(widths[s], 1);
+    ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width)) << "series " << s;
+    for (long k = 0; k < samples; ++k)
+      for (int c = 0; c < width; ++c)
+        ASSERT_EQ(values[k * width + c], 1000.0 * k + 10.0 * s + c) << "series " << s << " sample " << k << " column " << c;
+  }
+  std::filesystem::remove(output);
+}
+
 TEST(ResultFile, NumericalFailureExitsWithCodeThreeAndADiagnosis) {
   const std::string output = temporary("unstable.h5");
   const testing::CommandResult result = testing::run_command_line(
