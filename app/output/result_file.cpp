@@ -58,6 +58,10 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   const Handle access = unlocked_file_access();
   file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
+  text_type_ = hdf5::variable_text_type();
+  links_ = hdf5::intermediate_group_links();
+  dataset_access_ = uncached_dataset_access();
+  check(text_type_.valid() && links_.valid() && dataset_access_.valid(), "cannot create result file");
   set_attribute("/", samples_written_name, 0L);
   for (const auto& [object, bytes] : {std::pair{"/", root_room_bytes}, std::pair{"/summary", summary_room_bytes}}) {
     const std::vector<unsigned char> room(bytes, 0);
@@ -112,8 +116,7 @@ Handle ResultFile::open_object(const std::string& object_path) {
   const htri_t exists = H5Lexists(file_.get(), object_path.c_str(), H5P_DEFAULT);
   Handle object;
   if (exists <= 0) {
-    const Handle links = hdf5::intermediate_group_links();
-    object = Handle(H5Gcreate2(file_.get(), object_path.c_str(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+    object = Handle(H5Gcreate2(file_.get(), object_path.c_str(), links_.get(), H5P_DEFAULT, H5P_DEFAULT));
   } else {
     object = Handle(H5Oopen(file_.get(), object_path.c_str(), H5P_DEFAULT));
   }
@@ -168,10 +171,9 @@ void ResultFile::write_records(hid_t object, const std::string& name, const std:
 }
 
 void ResultFile::write_text_attribute(hid_t object, const std::string& name, const std::string& value) {
-  const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
   const char* text = value.c_str();
-  write_attribute(object, name, type.get(), space.get(), &text);
+  write_attribute(object, name, text_type_.get(), space.get(), &text);
 }
 
 void ResultFile::set_attribute(const std::string& object_path, const std::string& name, const std::string& value) {
@@ -214,14 +216,13 @@ void ResultFile::set_record_attribute(int series, const std::string& name, const
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
   ready_to_write();
-  const Handle type = hdf5::variable_text_type();
   const Handle space(H5Screate(H5S_SCALAR));
-  const Handle links = hdf5::intermediate_group_links();
-  const Handle dataset(
-      H5Dcreate2(file_.get(), dataset_path.c_str(), type.get(), space.get(), links.get(), H5P_DEFAULT, H5P_DEFAULT));
+  const Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), text_type_.get(), space.get(), links_.get(),
+                                  H5P_DEFAULT, H5P_DEFAULT));
   check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
   const char* data = text.c_str();
-  check(H5Dwrite(dataset.get(), type.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data) >= 0, "cannot write result file");
+  check(H5Dwrite(dataset.get(), text_type_.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data) >= 0,
+        "cannot write result file");
   write_text_attribute(dataset.get(), "description", description);
   write_text_attribute(dataset.get(), "units", "-");
 }
@@ -239,11 +240,9 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
                           H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
                           H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0;
-  const Handle access = uncached_dataset_access();
-  check(configured && access.valid(), "cannot create result file");
-  const Handle links = hdf5::intermediate_group_links();
-  Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links.get(),
-                            create.get(), access.get()));
+  check(configured, "cannot create result file");
+  Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links_.get(),
+                            create.get(), dataset_access_.get()));
   check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
   Series series;
   series.dataset = std::move(dataset);

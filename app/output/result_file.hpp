@@ -210,6 +210,9 @@ class ResultFile {
   /// The compound types of set_record_attribute, one per list of field names, built once
   /// (a run writes the same two lists on every series, at its creation and at the end).
   std::vector<std::pair<std::vector<std::string>, hdf5::Handle>> record_types_;
+  /// The text type, link creation and dataset access properties every series and text
+  /// attribute uses, made once (a run creates ~100 series with two texts each).
+  hdf5::Handle text_type_, links_, dataset_access_;
   hsize_t buffered_samples_ = 0;  // whole samples in the block (not yet on disk)
   hsize_t rows_on_disk_ = 0;      // rows written, or handed to the block writer, in every series (>= samples_written_)
   hsize_t handed_first_row_ = 0;  // the first row of the block in the block writer's hands
