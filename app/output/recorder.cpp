@@ -468,7 +468,7 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     body_frames_[i] = system.data().X_world_link[i] * system.model().links[i].X_link_body;
   csv_row_.clear();
   for (Channel& channel : channels_) {
-    // Filled in place, in the file's block of samples (or the recorder's own): no copy.
+    // Filled in place: the file's staged row of the sample (or the recorder's own block).
     double* row = file_ ? file_->sample_row(channel.series)
                         : channel.own_block.data() + block_samples_ * std::max(channel.columns, 1);
     channel.fill(t, row);

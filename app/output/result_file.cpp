@@ -251,6 +251,9 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.extent = reserved_samples_;
   series.buffer.assign(block_rows * series.width, 0.0);
   series.last_block.assign(block_rows * series.width, 0.0);
+  // The staging's layout is the series' (a row of each side by side): fixed before a sample.
+  if (buffered_samples_ > 0 || rows_on_disk_ > 0)
+    throw std::logic_error("ResultFile: a series added after samples: " + dataset_path);
   series.staging_offset = staging_width_;
   staging_width_ += series.width;
   staging_.assign(staged_rows * staging_width_, 0.0);  // no sample before the layout stands
@@ -272,6 +275,7 @@ void ResultFile::append(int series_id, const double* row) {
 
 void ResultFile::move_staged_rows_to_blocks() {
   if (staged_samples_ == 0) return;
+  if (staged_samples_ > buffered_samples_) throw std::logic_error("ResultFile: more samples staged than buffered");
   const hsize_t first = buffered_samples_ - staged_samples_;
   for (Series& series : series_) {
     const double* from = staging_.data() + series.staging_offset;
@@ -289,8 +293,9 @@ void ResultFile::move_staged_rows_to_blocks() {
 
 void ResultFile::end_sample() {
   ++buffered_samples_;
-  if (++staged_samples_ == staged_rows) move_staged_rows_to_blocks();
-  if (buffered_samples_ < block_rows) return;  // a block ends with a whole run, moved above
+  // A block's end moves what is staged too: block() may have moved a run short of 64.
+  if (++staged_samples_ == staged_rows || buffered_samples_ == block_rows) move_staged_rows_to_blocks();
+  if (buffered_samples_ < block_rows) return;
   // The recorder may end its samples on a thread of its own (Recorder::evaluate_on_second_thread).
   hdf5::report_errors_by_return_codes();
   // The block goes to the block writer, which writes it while the next one is filled;

@@ -96,7 +96,7 @@ class ResultFile {
                  const std::string& description);
   /// The series' row of the sample being built (max(columns, 1) values), sized once: a
   /// writer fills it in place (the recorder's channels do), then calls end_sample().
-  /// Valid until the next end_sample() or flush(). The rows of a sample lie side by side
+  /// Valid until the next end_sample(), flush() or block(). The rows of a sample lie side by side
   /// (staged_rows samples, one row of every series a sample) and go to the series'
   /// blocks a run of samples at a time: a sample's ~100 rows, each in its own block, were
   /// as many scattered stores into memory no cache holds (docs/performance.md).
@@ -104,7 +104,7 @@ class ResultFile {
     return staging_.data() + staged_samples_ * staging_width_ + series_[series].staging_offset;
   }
   /// The series' block of samples being built, row after row: the rows of the samples
-  /// buffered (buffered_samples()).
+  /// buffered (buffered_samples()). Moves the staged rows into the blocks first.
   const double* block(int series) {
     move_staged_rows_to_blocks();
     return series_[series].buffer.data();

@@ -156,13 +156,16 @@ TEST(ResultFile, AKilledWriterLeavesWholeSamples) {
 
 TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   // Series of widths 1, 3 and 7 (rows staged side by side, then moved to each series'
-  // block a run of 64 samples at a time, result_file.hpp), 2600 samples: two whole blocks
-  // and a partial one, with flushes between samples off the runs' and blocks' boundaries
-  // and one between the appends of a sample (whose first row must survive the flush).
-  // Value (k, series s, column c) = 1000 k + 10 s + c, read back from the file.
+  // block a run of 64 samples at a time, result_file.hpp), 4000 samples: whole blocks of
+  // 1024 handed to the block writer (after k = 1124, 2523, 3547), flushes off the runs'
+  // and blocks' boundaries, one between the appends of a sample (whose first row must
+  // survive it), and a read of the block being built (block(), which moves a run short
+  // of 64) before the next block ends. Value (k, series s, column c) = 1000 k + 10 s + c,
+  // read back from the block and from the file.
   const std::string output = temporary("rows.h5");
   const int widths[3] = {0, 3, 7};
-  const long samples = 2600;
+  const long samples = 4000;
+  const auto value = [](long k, int s, int c) { return 1000.0 * k + 10.0 * s + c; };
   {
     ResultFile file(output, 1024);
     int ids[3];
@@ -172,12 +175,21 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
     std::vector<double> row(7);
     for (long k = 0; k < samples; ++k) {
       for (int s = 0; s < 3; ++s) {
-        for (int c = 0; c < std::max(widths[s], 1); ++c) row[c] = 1000.0 * k + 10.0 * s + c;
+        for (int c = 0; c < std::max(widths[s], 1); ++c) row[c] = value(k, s, c);
         file.append(ids[s], row.data());
         if (k == 1500 && s == 0) file.flush();  // between the appends of a sample
       }
       file.end_sample();
-      if (k == 100 || k == 1023 || k == 1100 || k == 2047 || k == 2050) file.flush();
+      if (k == 100 || k == 1300 || k == 3900) file.flush();
+      if (k == 1600 || k == 1637) {
+        // The block being built holds samples k - buffered + 1 .. k, in order.
+        const long buffered = static_cast<long>(file.buffered_samples());
+        ASSERT_GT(buffered, 0);
+        const double* block = file.block(ids[2]);
+        for (long r = 0; r < buffered; ++r)
+          for (int c = 0; c < 7; ++c)
+            ASSERT_EQ(block[r * 7 + c], value(k - buffered + 1 + r, 2, c)) << "sample " << k << " row " << r;
+      }
     }
     file.close();
   }
@@ -189,7 +201,7 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
     ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width)) << "series " << s;
     for (long k = 0; k < samples; ++k)
       for (int c = 0; c < width; ++c)
-        ASSERT_EQ(values[k * width + c], 1000.0 * k + 10.0 * s + c) << "series " << s << " sample " << k << " column " << c;
+        ASSERT_EQ(values[k * width + c], value(k, s, c)) << "series " << s << " sample " << k << " column " << c;
   }
   std::filesystem::remove(output);
 }

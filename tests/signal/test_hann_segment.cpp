@@ -16,7 +16,6 @@
 namespace heavesim::stats {
 namespace {
 
-
 std::vector<std::complex<double>> hann_windowed_dft(const std::vector<double>& x) {
   const int L = static_cast<int>(x.size());
   double mean = 0.0;

@@ -179,7 +179,7 @@ TEST(ResponseStatistics, RowsOfManyColumnsMatchTheClosedFormsColumnByColumn) {
 // order, bit for bit; the moments' vectorised sums start on the copy's alignment instead
 // of the original's, so they agree to round-off.
 TEST(ResponseStatistics, ColumnOfInterleavedRowsGivesTheContiguousStatisticsExactly) {
-  const int n = 6000, stride = 5;
+  const int n = 10000, stride = 5;
   StatisticsOptions options;
   options.time_step = 0.05;
   options.duration = 3.0 * 3600.0;
@@ -191,7 +191,7 @@ TEST(ResponseStatistics, ColumnOfInterleavedRowsGivesTheContiguousStatisticsExac
   }
   ResponseStatisticsAccumulator from_rows(options, n), from_column(options, n);
   int first = 0;
-  for (int size : {3, 1024, 1024, 4096}) {  // the recorder's blocks, and one as long as the run copied at once
+  for (int size : {3, 1024, 1024, 5000, n}) {  // the recorder's blocks, and one longer than a run copied at once
     const int count = std::min(size, n - first);
     from_rows.add(interleaved.data() + first * stride + 2, stride, count);
     from_column.add(contiguous.data() + first, 1, count);
