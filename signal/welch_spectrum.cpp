@@ -29,25 +29,17 @@ WelchAccumulator::WelchAccumulator(int segment_length, double sampling_frequency
 
 void WelchAccumulator::add(double x) {
   buffer_[filled_++] = x;
-  if (filled_ < static_cast<int>(buffer_.size())) return;
-  add_segment();
-  const int half = static_cast<int>(buffer_.size()) / 2;
-  std::copy(buffer_.begin() + half, buffer_.end(), buffer_.begin());
-  filled_ = half;
+  if (filled_ == static_cast<int>(buffer_.size())) add_segment();
 }
 
 void WelchAccumulator::add(const double* x, std::int64_t count) {
-  const std::int64_t length = static_cast<std::int64_t>(buffer_.size()), half = length / 2;
   while (count > 0) {
-    const std::int64_t taken = std::min(count, length - filled_);
+    const std::int64_t taken = std::min(count, static_cast<std::int64_t>(buffer_.size()) - filled_);
     std::copy_n(x, taken, buffer_.begin() + filled_);
     filled_ += static_cast<int>(taken);
     x += taken;
     count -= taken;
-    if (filled_ < length) return;
-    add_segment();
-    std::copy(buffer_.begin() + half, buffer_.end(), buffer_.begin());  // 50 % overlap
-    filled_ = static_cast<int>(half);
+    if (filled_ == static_cast<int>(buffer_.size())) add_segment();
   }
 }
 
@@ -55,6 +47,10 @@ void WelchAccumulator::add_segment() {
   const std::vector<std::complex<double>>& transform = segment_transform_.transform(buffer_.data());
   for (std::size_t k = 0; k < power_sum_.size(); ++k) power_sum_[k] += std::norm(transform[k]);
   ++segments_;
+  // 50 % overlap: the segment's second half begins the next one.
+  const int half = static_cast<int>(buffer_.size()) / 2;
+  std::copy(buffer_.begin() + half, buffer_.end(), buffer_.begin());
+  filled_ = half;
 }
 
 std::vector<double> WelchAccumulator::frequencies() const {

@@ -48,6 +48,7 @@ class WelchAccumulator {
   SpectralMoments moments() const;
 
  private:
+  /// The full buffer's periodogram into the sums; its second half begins the next segment.
   void add_segment();
   double sampling_frequency_;
   HannSegmentTransform segment_transform_;
