@@ -59,6 +59,9 @@ int main(int argc, char** argv) {
   CLI::App* validate = app.add_subcommand("validate", "run the validation suite and print a PASS/FAIL table");
   validate->add_option("names", validation_names, "checks to run (e.g. K1 K3); default all");
   validate->add_flag("--list", list_only, "list the checks without running them");
+  int validation_jobs = 1;
+  validate->add_option("-j,--jobs", validation_jobs, "checks at once (threads; the table keeps the suite's order)")
+      ->check(CLI::Range(1, 1024));
 
   std::string mksim_path, mksim_case_path;
   CLI::App* import_mksim = app.add_subcommand("import-mksim", "write an MKSim model (.mks) as a heavesim case");
@@ -127,7 +130,7 @@ int main(int argc, char** argv) {
     if (*kinematics) return kinematics_command(kinematics_options);
     if (*check) return check_command(check_path, check_overrides, check_allow_large_runs);
     if (*equilibrium) return equilibrium_command(equilibrium_options);
-    if (*validate) return validate_command(validation_names, list_only);
+    if (*validate) return validate_command(validation_names, list_only, validation_jobs);
     if (*import_mksim) return import_mksim_command(mksim_path, mksim_case_path);
     if (*stats) return stats_command(stats_options);
     if (*operability) return operability_command(operability_options);

@@ -40,7 +40,9 @@ int equilibrium_command(const EquilibriumOptions& options);
 /// The static equilibrium a scene starts from (`initial: static`): residual, stability.
 void print_equilibrium_summary(const Scene& scene);
 
-int validate_command(const std::vector<std::string>& names, bool list_only);
+/// heavesim validate: the validation table (docs/validation.md) of the named checks (all
+/// if none), `jobs` checks at a time on threads of this process; exit 0 only if every row passes.
+int validate_command(const std::vector<std::string>& names, bool list_only, int jobs = 1);
 
 struct StatsOptions {
   std::string result_path;
