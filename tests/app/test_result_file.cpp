@@ -206,6 +206,46 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   std::filesystem::remove(output);
 }
 
+// A record attribute (a compound of doubles, as a channel's statistics) written at the
+// layout and again at the end: with the same fields it is overwritten in place; with
+// fields of the same count and size but another name it must be written anew, names and
+// values, not reinterpreted (result_file.cpp compares the stored type member by member).
+TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
+  const std::string output = temporary("records.h5");
+  const double nan = std::nan("");
+  {
+    ResultFile file(output);
+    const int id = file.add_series("/series", 2, "-", "two columns");
+    file.set_record_attribute(id, "statistics", {"mean", "std"}, {nan, nan, nan, nan});
+    file.set_record_attribute(id, "other", {"a", "b"}, {nan, nan});
+    file.flush();  // published: headers no longer grow
+    file.set_record_attribute(id, "statistics", {"mean", "std"}, {1.0, 2.0, 3.0, 4.0});
+    file.set_record_attribute(id, "other", {"a", "c"}, {5.0, 6.0});
+    file.close();
+  }
+  const auto read_records = [&](const std::string& name, std::vector<std::string>& fields) {
+    const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    const hid_t attribute = H5Aopen_by_name(file, "/series", name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute), space = H5Aget_space(attribute);
+    fields.clear();
+    for (int m = 0; m < H5Tget_nmembers(type); ++m) {
+      char* field = H5Tget_member_name(type, static_cast<unsigned>(m));
+      fields.emplace_back(field);
+      H5free_memory(field);
+    }
+    std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)) * fields.size());
+    EXPECT_GE(H5Aread(attribute, type, values.data()), 0);
+    H5Sclose(space), H5Tclose(type), H5Aclose(attribute), H5Fclose(file);
+    return values;
+  };
+  std::vector<std::string> fields;
+  EXPECT_EQ(read_records("statistics", fields), (std::vector<double>{1.0, 2.0, 3.0, 4.0}));
+  EXPECT_EQ(fields, (std::vector<std::string>{"mean", "std"}));
+  EXPECT_EQ(read_records("other", fields), (std::vector<double>{5.0, 6.0}));
+  EXPECT_EQ(fields, (std::vector<std::string>{"a", "c"}));
+  std::filesystem::remove(output);
+}
+
 TEST(ResultFile, NumericalFailureExitsWithCodeThreeAndADiagnosis) {
   const std::string output = temporary("unstable.h5");
   const testing::CommandResult result = testing::run_command_line(
