@@ -82,14 +82,16 @@ class HhtIntegrator : public Integrator {
   DynamicsDerivatives derivatives_;
   MatrixX newton_matrix_;
   Eigen::PartialPivLU<MatrixX> newton_lu_;
+  MatrixX active_jacobian_;  // the rows of J not identically zero, gathered for the penalty's J^T J
   // Projections
   ConstraintTerms terms_;
   SizedCholesky mass_llt_;
   std::vector<int> projection_rows_;           // rows independent at the start
   MatrixX projection_jacobian_;                // J of those rows
-  MatrixX minv_jt_, schur_;                    // M^-1 J^T, J M^-1 J^T (those rows)
+  MatrixX whitened_jacobian_t_;                // W = L^-1 J^T (those rows) with M = L L^T
+  MatrixX schur_;                              // J M^-1 J^T = W^T W, lower triangle
   RegularizedSymmetricSolver schur_solver_;
-  VectorX projection_residual_, projection_multipliers_, speeds_, gamma_target_;
+  VectorX projection_residual_, projection_multipliers_, projection_step_, speeds_, gamma_target_;
   // Diagnosis of the last failed step
   double worst_residual_ = 0.0;
   std::optional<NumericalError> last_failure_;  // an evaluation's own error (non-finite, out of range)
