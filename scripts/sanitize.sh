@@ -19,10 +19,11 @@ export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 #       solver): 342 s in an earlier run (Release 7 s);
 #   A01 a pendulum for 2000 s (K3 runs the same pendulum and integrators): 61 s earlier;
 #   A05 the flyball governor, 10 s of IDA and 200,000 HHT steps: 202 s (Release 3 s);
-#       L1 and A04 run IDA's and HHT's closed-loop paths;
+#       A03 and A04 run IDA's closed-loop path, A04 HHT's;
 #   L5  the over-constrained parallelogram, 10 s of HHT at 0.1 ms and Dormand-Prince:
-#       94 s (Release 1 s); A04 runs the redundant rows through both integrators, L2 the
-#       parallelogram through HHT;
+#       94 s (Release 1 s); A04 runs a redundant row through both integrators, and
+#       NoMalloc.HhtStepsDoNotAllocate a planar four-bar closed by a revolute loop joint
+#       (whose out-of-plane rows are zero) through HHT;
 #   K5  a free body and a symmetric top for 100 s each: 36 s (Release 0.6 s); K6 runs
 #       the free joint's algorithms in random trees, K3 the integrators;
 #   Report.IrregularSeaPageHasItsRaos  a 3-hour sea of 1000 components, its report and

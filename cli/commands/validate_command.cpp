@@ -19,14 +19,15 @@ using validation::ValidationRow;
 /// One check's outcome: its rows, or the error that stopped it, and its wall time.
 struct CheckOutcome {
   std::vector<ValidationRow> rows;
-  std::string error;  // non-empty: the check threw
+  bool failed = false;  // the check threw: `error` says what
+  std::string error;
   double seconds = 0.0;
   bool done = false;
 };
 
 /// Prints one check's rows in the table's format; returns the number of failed rows.
 int print_outcome(const ValidationCheck& check, const CheckOutcome& outcome) {
-  if (!outcome.error.empty()) {
+  if (outcome.failed) {
     fmt::print("{:<4} {:<52} {:<46} {:>10} {:>10}  FAIL ({})\n", check.id, check.title.substr(0, 52), "(did not run)",
                "-", "-", outcome.error);
     return 1;
@@ -48,7 +49,11 @@ CheckOutcome run_check(const ValidationCheck& check) {
   try {
     outcome.rows = check.run();
   } catch (const std::exception& error) {
+    outcome.failed = true;
     outcome.error = error.what();
+  } catch (...) {  // on a worker thread nothing may escape (std::terminate)
+    outcome.failed = true;
+    outcome.error = "an exception that is not a std::exception";
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   outcome.done = true;
@@ -100,6 +105,7 @@ int validate_command(const std::vector<std::string>& names, bool list_only, int 
   };
   const std::size_t thread_count = std::min<std::size_t>(std::max(jobs, 1), selected.size());
   std::vector<std::jthread> threads;  // joined at return, after the last check is printed
+  threads.reserve(thread_count);
   if (thread_count > 1)
     for (std::size_t t = 0; t < thread_count; ++t) threads.emplace_back(work);
 
