@@ -5,6 +5,7 @@
 #include <condition_variable>
 #include <cstdio>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include "cli/commands/commands.hpp"
@@ -19,17 +20,15 @@ using validation::ValidationRow;
 /// One check's outcome: its rows, or the error that stopped it, and its wall time.
 struct CheckOutcome {
   std::vector<ValidationRow> rows;
-  bool failed = false;  // the check threw: `error` says what
-  std::string error;
+  std::optional<std::string> error;  // set: the check threw (its what() may be empty)
   double seconds = 0.0;
-  bool done = false;
 };
 
 /// Prints one check's rows in the table's format; returns the number of failed rows.
 int print_outcome(const ValidationCheck& check, const CheckOutcome& outcome) {
-  if (outcome.failed) {
+  if (outcome.error) {
     fmt::print("{:<4} {:<52} {:<46} {:>10} {:>10}  FAIL ({})\n", check.id, check.title.substr(0, 52), "(did not run)",
-               "-", "-", outcome.error);
+               "-", "-", *outcome.error);
     return 1;
   }
   int failures = 0;
@@ -49,14 +48,11 @@ CheckOutcome run_check(const ValidationCheck& check) {
   try {
     outcome.rows = check.run();
   } catch (const std::exception& error) {
-    outcome.failed = true;
     outcome.error = error.what();
   } catch (...) {  // on a worker thread nothing may escape (std::terminate)
-    outcome.failed = true;
     outcome.error = "an exception that is not a std::exception";
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  outcome.done = true;
   return outcome;
 }
 
@@ -80,10 +76,11 @@ int validate_command(const std::vector<std::string>& names, bool list_only, int 
     if (names.empty() || std::find(names.begin(), names.end(), check.id) != names.end()) selected.push_back(&check);
 
   // The checks are independent (each builds its own models, integrators and files), so
-  // `jobs` threads take them in turn; the table is printed in the suite's order, each
-  // check as soon as it and every check before it are done. A check's own wall time is
-  // its own, but with other checks beside it on the same cores.
-  std::vector<CheckOutcome> outcomes(selected.size());
+  // `jobs` threads take them in turn (one thread with -j 1: the same path); this thread
+  // prints the table in the suite's order, each check as soon as it and every check
+  // before it are done. A check's own wall time is its own, but with other checks beside
+  // it on the same cores.
+  std::vector<std::optional<CheckOutcome>> outcomes(selected.size());
   std::mutex mutex;
   std::condition_variable finished;
   std::size_t next = 0;
@@ -106,22 +103,17 @@ int validate_command(const std::vector<std::string>& names, bool list_only, int 
   const std::size_t thread_count = std::min<std::size_t>(std::max(jobs, 1), selected.size());
   std::vector<std::jthread> threads;  // joined at return, after the last check is printed
   threads.reserve(thread_count);
-  if (thread_count > 1)
-    for (std::size_t t = 0; t < thread_count; ++t) threads.emplace_back(work);
+  for (std::size_t t = 0; t < thread_count; ++t) threads.emplace_back(work);
 
   fmt::print("{:<4} {:<52} {:<46} {:>10} {:>10}  {}\n", "id", "case", "quantity", "max error", "tolerance", "result");
   std::fflush(stdout);
   int failures = 0;
-  if (thread_count <= 1) {
-    for (const ValidationCheck* check : selected) failures += print_outcome(*check, run_check(*check));
-  } else {
-    for (std::size_t i = 0; i < selected.size(); ++i) {
-      std::unique_lock lock(mutex);
-      finished.wait(lock, [&] { return outcomes[i].done; });
-      const CheckOutcome outcome = std::move(outcomes[i]);
-      lock.unlock();
-      failures += print_outcome(*selected[i], outcome);
-    }
+  for (std::size_t i = 0; i < selected.size(); ++i) {
+    std::unique_lock lock(mutex);
+    finished.wait(lock, [&] { return outcomes[i].has_value(); });
+    const CheckOutcome outcome = std::move(*outcomes[i]);
+    lock.unlock();
+    failures += print_outcome(*selected[i], outcome);
   }
   fmt::print("{}\n", failures == 0 ? "all validation checks PASS" : fmt::format("{} validation rows FAIL", failures));
   return failures == 0 ? 0 : 1;
