@@ -382,7 +382,7 @@ int main(int argc, char** argv) {
                  1e3 * ours.cpu, ours.error, 1e3 * example.cpu, example.error, ours.cpu / example.cpu);
       const IntegratorStatistics& counts = ours.statistics;
       fmt::print("heavesim IDA: {} steps, {} residuals, {} Newton iterations, {} convergence failures, {} error test "
-                 "failures, {} Newton matrices (the example prints its own at the end of {})\n",
+                 "failures, {} Jacobian evaluations (the example prints its own at the end of {})\n",
                  counts.steps, counts.rhs_evaluations, counts.nonlinear_iterations, counts.convergence_failures,
                  counts.error_test_failures, counts.jacobian_evaluations, "/tmp/heavesim_idaSlCrank_dns.out");
     }

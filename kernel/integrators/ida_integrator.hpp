@@ -50,7 +50,8 @@ class IdaIntegrator : public Integrator {
   SUNLinearSolver linear_solver_ = nullptr;
   VectorX state_, work_y_, work_yp_, work_r_;
   VectorX constraint_scale_;  // DaeSystem::algebraic_constraint_scales
-  MatrixX work_jacobian_;
+  MatrixX residual_y_, residual_yp_;  // dF/dy and dF/dy' of the last evaluation (DaeSystem::jacobian)
+  MatrixX work_jacobian_;              // dF/dy + cj dF/dy' for IDA's matrix
   std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
   std::vector<int> events_found_;             // IDAGetRootInfo
   VectorX event_values_;

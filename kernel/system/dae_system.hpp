@@ -28,11 +28,21 @@ class DaeSystem : public FailureDiagnosis {
   /// and algebraic ones without a constraint): the integrator weighs it by
   /// h s_i / (constraint tolerance) in Newton's test. Default: none.
   virtual void algebraic_constraint_scales(VectorX& scale) const { scale.setZero(dae_size()); }
-  /// dF/dy + cj dF/dy'; returns false to let the integrator approximate it.
-  virtual bool jacobian(double /*t*/, const VectorX& /*y*/, const VectorX& /*yp*/, double /*cj*/,
-                        MatrixX& /*J*/) {
+  /// The two parts of IDA's Newton matrix dF/dy + cj dF/dy': dF/dy in `residual_y` and
+  /// dF/dy' in `residual_yp` (apart, so that the integrator re-forms the matrix for a new
+  /// cj without evaluating them again). Returns false to let the integrator approximate
+  /// the matrix.
+  virtual bool jacobian(double /*t*/, const VectorX& /*y*/, const VectorX& /*yp*/, MatrixX& /*residual_y*/,
+                        MatrixX& /*residual_yp*/) {
     return false;
   }
+  /// Brings the blocks of `residual_y` (the dF/dy of the last jacobian() call) that are
+  /// cheap to evaluate up to the state of the last residual() call where they have changed
+  /// enough to slow Newton's iteration, keeping the costly ones; true when it changed any.
+  /// IDA's dense path with position multipliers calls it before each linear solve and
+  /// re-forms the Newton matrix when it returns true. Called from SUNDIALS' C code: it must
+  /// not throw. Default: nothing.
+  virtual bool refresh_jacobian(MatrixX& /*residual_y*/) noexcept { return false; }
 
   // --- events (Simbody's event triggers and handlers): functions g_i(t, y) whose fall
   // through zero the integrator locates, and what happens there ---

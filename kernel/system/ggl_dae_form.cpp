@@ -14,7 +14,7 @@
 // themselves. Reported multipliers still come from evaluate(), the minimum-norm
 // solution over all rows.
 //
-// The Newton matrix dF/dy + cj dF/dy' is assembled from the dynamics' partial
+// The Newton matrix's parts dF/dy and dF/dy' are assembled from the dynamics' partial
 // derivatives (dynamics_differentiator.hpp: analytic M, dID/dq, dID/dv; differences for
 // the elements and the q-dependence of J^T lambda, J^T mu and J v), J, Phi_q = J N+
 // and N. Derivatives in q are taken along tangent directions and mapped to the raw
@@ -104,6 +104,7 @@ void GglDaeForm::dae_initial_values(double t, const VectorX& state, VectorX& y, 
   y.head(size) = state;
   yp.head(size) = ode_rate_;
   rows_jacobian_.resize(kept, model.nv);
+  rows_jacobian_in_newton_matrix_.resize(kept, model.nv);
   constraint_.resize(kept);
   if (kept == 0) return;
   // Multipliers of the kept rows giving the same constraint force J^T lambda (mu = 0).
@@ -210,11 +211,12 @@ void GglDaeForm::configuration_maps() {
   }
 }
 
-bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) {
+bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, MatrixX& residual_y, MatrixX& residual_yp) {
   const Model& model = system_.model();
   const int nq = model.nq, nv = model.nv, size = system_.size(), nz = size - nq - nv, m = kept_rows();
   const int iv = nq, iz = nq + nv, il = size, im = size + m;
-  J.setZero(dae_size(), dae_size());
+  residual_y.setZero(dae_size(), dae_size());  // dF/dy
+  residual_yp.setZero(dae_size(), dae_size());  // dF/dy': q' and z' appear alone, v' through ID (the mass matrix)
 
   ggl_derivatives_.mu = y.segment(im, m);
   lambda_ = y.segment(il, m);
@@ -230,7 +232,7 @@ bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, double 
   w_.noalias() -= rows_jacobian.transpose() * ggl_derivatives_.mu;
   qdot_.resize(nq);
   configuration_derivative(model, q, w_, qdot_);
-  J.block(0, 0, nq, nq).diagonal().setConstant(cj);
+  residual_yp.block(0, 0, nq, nq).diagonal().setOnes();
   // d(N(q) w)/dq in raw coordinates: N is constant for plain coordinates, so only the
   // quaternion-carrying joints (spherical, free) have columns here.
   const double h_raw = 1e-7;
@@ -243,35 +245,77 @@ bool GglDaeForm::jacobian(double t, const VectorX& y, const VectorX& yp, double 
       q_perturbed_[k] += h_raw;
       configuration_derivative(model, q_perturbed_, w_, qdot_plus_);
       q_perturbed_[k] = q[k];
-      J.block(0, k, nq, 1) -= (qdot_plus_ - qdot_) / h_raw;
+      residual_y.block(0, k, nq, 1) -= (qdot_plus_ - qdot_) / h_raw;
     }
   }
   // N (d(J^T mu)/dq) N+, in two products through a kept workspace (a triple product
   // would make a heap temporary at every Newton matrix).
   n_times_jt_mu_q_.noalias() = N_ * ggl_derivatives_.jt_mu_q;
-  J.block(0, 0, nq, nq).noalias() += n_times_jt_mu_q_ * N_plus_;
-  J.block(0, iv, nq, nv) = -N_;
+  residual_y.block(0, 0, nq, nq).noalias() += n_times_jt_mu_q_ * N_plus_;
+  residual_y.block(0, iv, nq, nv) = -N_;
 
   // F_v = ID(q, v, v') - Q - J^T lambda;  F_z = z' - g.
-  J.block(iv, 0, nv, nq).noalias() = d.force_q * N_plus_;
-  J.block(iv, iv, nv, nv) = d.force_v + cj * d.mass;
+  residual_y.block(iv, 0, nv, nq).noalias() = d.force_q * N_plus_;
+  residual_y.block(iv, iv, nv, nv) = d.force_v;
+  residual_yp.block(iv, iv, nv, nv) = d.mass;
   if (nz > 0) {
-    J.block(iv, iz, nv, nz) = d.force_z;
-    J.block(iz, 0, nz, nq).noalias() = -d.rate_q * N_plus_;
-    J.block(iz, iv, nz, nv) = -d.rate_v;
-    J.block(iz, iz, nz, nz) = -d.rate_z;
-    J.block(iz, iz, nz, nz).diagonal().array() += cj;
+    residual_y.block(iv, iz, nv, nz) = d.force_z;
+    residual_y.block(iz, 0, nz, nq).noalias() = -d.rate_q * N_plus_;
+    residual_y.block(iz, iv, nz, nv) = -d.rate_v;
+    residual_y.block(iz, iz, nz, nz) = -d.rate_z;
+    residual_yp.block(iz, iz, nz, nz).diagonal().setOnes();
   }
-  if (m > 0) {
-    // F_lambda = J v - nu, F_mu = Phi.
-    J.block(0, im, nq, m).noalias() = N_ * rows_jacobian.transpose();
-    J.block(iv, il, nv, m) = -rows_jacobian.transpose();
-    J.block(il, 0, m, nq).noalias() = ggl_derivatives_.jv_q * N_plus_;
-    J.block(il, iv, m, nv) = rows_jacobian;
-    J.block(im, 0, m, nq).noalias() = rows_jacobian * N_plus_;
-  }
-  J.array().colwise() *= equation_scale_.array();
+  if (m > 0) residual_y.block(il, 0, m, nq).noalias() = ggl_derivatives_.jv_q * N_plus_;  // d(J v)/dq
+  residual_y.array().colwise() *= equation_scale_.array();
+  residual_yp.array().colwise() *= equation_scale_.array();
+  write_constraint_blocks(rows_jacobian, residual_y);
   return true;
+}
+
+void GglDaeForm::write_constraint_blocks(const MatrixX& kept_jacobian, MatrixX& residual_y) {
+  const int nq = system_.model().nq, nv = system_.model().nv, size = system_.size(), m = kept_rows();
+  if (m == 0) return;
+  const int iv = nq, il = size, im = size + m;
+  // F_q = q' - N (v - J^T mu), F_v = ID - Q - J^T lambda, F_lambda = J v - nu, F_mu = Phi
+  // (Phi_q = J N+), each row scaled by its equation's constant.
+  rows_jacobian_in_newton_matrix_ = kept_jacobian;
+  auto n_jt = residual_y.block(0, im, nq, m);
+  auto jt = residual_y.block(iv, il, nv, m);
+  auto j = residual_y.block(il, iv, m, nv);
+  auto j_n_plus = residual_y.block(im, 0, m, nq);
+  n_jt.noalias() = N_ * kept_jacobian.transpose();
+  jt = -kept_jacobian.transpose();
+  j = kept_jacobian;
+  j_n_plus.noalias() = kept_jacobian * N_plus_;
+  n_jt.array().colwise() *= equation_scale_.segment(0, nq).array();
+  jt.array().colwise() *= equation_scale_.segment(iv, nv).array();
+  j.array().colwise() *= equation_scale_.segment(il, m).array();
+  j_n_plus.array().colwise() *= equation_scale_.segment(im, m).array();
+}
+
+bool GglDaeForm::refresh_jacobian(MatrixX& residual_y) noexcept {
+  // The loops turn with the mechanism. The position multipliers' Schur complement is
+  // about J J^T / cj, so a J that has turned by a relative d since the matrix was formed
+  // makes their iteration converge at a rate of about d; their first correction is
+  // typically 1e4-1e5 of their weight (the position tolerance over the constraint
+  // tolerance), which IDA's four iterations reduce below its test only at rates of a few
+  // percent. On the slider-crank L1 at rtol = atol = 1e-6, with J kept from the last
+  // evaluation (0.05-0.3 rad of crank earlier) they converged at 0.04-0.4 and failed
+  // the test 47 times in 268 steps. So J's blocks are rewritten from the last residual's
+  // J (the Newton iterate's) once a row has moved by 1 % of its largest entry; N and N+
+  // (the identity but for quaternions) and the dynamics' derivatives stay those of the
+  // last evaluation.
+  // Row by row, each against its own largest entry, so that the test does not depend on
+  // the units of the rows (metres against radians, long and short lever arms).
+  for (int row = 0; row < kept_rows(); ++row) {
+    const double largest_entry = rows_jacobian_in_newton_matrix_.row(row).cwiseAbs().maxCoeff();
+    if ((rows_jacobian_.row(row) - rows_jacobian_in_newton_matrix_.row(row)).cwiseAbs().maxCoeff() >
+        1e-2 * largest_entry) {
+      write_constraint_blocks(rows_jacobian_, residual_y);
+      return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace heavesim

@@ -20,7 +20,10 @@ class GglDaeForm final : public DaeSystem {
   void dae_initial_values(double t, const VectorX& state, VectorX& y, VectorX& yp) override;
   void state_from_dae(const VectorX& y, VectorX& state) const override { state = y.head(system_.size()); }
   void residual(double t, const VectorX& y, const VectorX& yp, VectorX& r) override;
-  bool jacobian(double t, const VectorX& y, const VectorX& yp, double cj, MatrixX& J) override;
+  bool jacobian(double t, const VectorX& y, const VectorX& yp, MatrixX& residual_y, MatrixX& residual_yp) override;
+  /// The loops' blocks (J's rows and columns) from the last residual's J, when a row of it
+  /// has turned by more than 1 % of the row's largest entry since they were written.
+  bool refresh_jacobian(MatrixX& residual_y) noexcept override;
   std::string describe_component(int index) const override;
   void algebraic_constraint_scales(VectorX& scale) const override;
   StateDiagnosis diagnose_state(double t, const VectorX& y) override {
@@ -40,6 +43,8 @@ class GglDaeForm final : public DaeSystem {
   int kept_rows() const { return static_cast<int>(rows_.size()); }
   /// N(q) and N+(q) at the system's configuration.
   void configuration_maps();
+  /// Writes dF/dy's blocks that are J itself (scaled rows), for the kept rows' J.
+  void write_constraint_blocks(const MatrixX& kept_jacobian, MatrixX& residual_y);
 
   MultibodySystem& system_;
   DynamicsDifferentiator differentiator_;
@@ -50,6 +55,7 @@ class GglDaeForm final : public DaeSystem {
   VectorX map_unit_, map_qdot_, map_qdot_zero_;  // workspaces of configuration_maps()
   MatrixX n_times_jt_mu_q_;                      // nq x nv, workspace of jacobian()
   MatrixX rows_jacobian_;  // J of the kept rows at the last residual
+  MatrixX rows_jacobian_in_newton_matrix_;  // the J of dF/dy's blocks (write_constraint_blocks)
   VectorX constraint_;     // Phi of the kept rows
   VectorX position_row_scale_;  // (J J^T)_ii of the kept rows at the start
   VectorX equation_scale_;      // a constant per equation (dae_initial_values)

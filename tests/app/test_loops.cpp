@@ -77,8 +77,9 @@ std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& cas
     yp[i] += 0.3 * std::cos(2.0 + i);
   }
   const double cj = 7.5;
-  MatrixX analytic;
-  EXPECT_TRUE(system.jacobian(0.3, y, yp, cj, analytic));
+  MatrixX residual_y, residual_yp;
+  EXPECT_TRUE(system.jacobian(0.3, y, yp, residual_y, residual_yp));
+  const MatrixX analytic = residual_y + cj * residual_yp;
   MatrixX numeric(n, n);
   VectorX plus(n), minus(n);
   const double h = 1e-6;
@@ -105,6 +106,55 @@ TEST(Loops, DaeNewtonMatrixMatchesFiniteDifferencesOfTheResidual) {
   // and the q-dependence of J^T lambda: agreement to ~1e-6 relative is what they give.
   EXPECT_LT((analytic - numeric).cwiseAbs().maxCoeff(), 1e-6 * numeric.cwiseAbs().maxCoeff())
       << "analytic\n" << analytic << "\nnumeric\n" << numeric;
+}
+
+TEST(Loops, RefreshedNewtonMatrixHasTheLoopBlocksOfTheNewState) {
+  // IDA keeps a Newton matrix over several steps; the loops' blocks of dF/dy (J's rows and
+  // columns) are brought up to the last residual's state once J has moved (refresh_jacobian).
+  // Reference: central differences of the residual at the new state.
+  const CaseDefinition definition = load_case(testing::source_path("cases/validation/slider_crank.yaml"));
+  Scene scene = build_scene(definition);
+  GglDaeForm system(*scene.system);
+  VectorX y, yp;
+  system.dae_initial_values(0.0, scene.initial_state, y, yp);
+  const int n = static_cast<int>(y.size()), size = scene.system->size(), m = (n - size) / 2;
+  ASSERT_GT(m, 0);
+  MatrixX residual_y, residual_yp;
+  ASSERT_TRUE(system.jacobian(0.0, y, yp, residual_y, residual_yp));
+  const MatrixX before = residual_y;
+  VectorX r(n);
+  system.residual(0.0, y, yp, r);
+  EXPECT_FALSE(system.refresh_jacobian(residual_y)) << "J has not moved";
+  // The crank turned by 0.3 rad, the others moved a little, non-zero multipliers.
+  for (int i = 0; i < n; ++i) y[i] += 0.02 * std::sin(1.0 + 3.0 * i);
+  y[0] += 0.3;
+  system.residual(0.0, y, yp, r);
+  ASSERT_TRUE(system.refresh_jacobian(residual_y));
+  const double h = 1e-6;
+  MatrixX numeric(n, n);
+  VectorX plus(n), minus(n);
+  for (int k = 0; k < n; ++k) {
+    VectorX y_plus = y, y_minus = y;
+    y_plus[k] += h;
+    y_minus[k] -= h;
+    system.residual(0.0, y_plus, yp, plus);
+    system.residual(0.0, y_minus, yp, minus);
+    numeric.col(k) = (plus - minus) / (2 * h);
+  }
+  const auto expect_near = [&](int row, int column, int rows, int columns, const char* what) {
+    const MatrixX difference = residual_y.block(row, column, rows, columns) - numeric.block(row, column, rows, columns);
+    const double block_scale = numeric.block(row, column, rows, columns).cwiseAbs().maxCoeff();
+    EXPECT_LT(difference.cwiseAbs().maxCoeff(), 1e-7 * block_scale)
+        << what << "\nrefreshed\n" << residual_y.block(row, column, rows, columns) << "\nnumeric\n"
+        << numeric.block(row, column, rows, columns);
+  };
+  const int nq = scene.model->nq, nv = scene.model->nv;
+  expect_near(0, size + m, nq, m, "dF_q/dmu = N J^T");
+  expect_near(nq, size, nv, m, "dF_v/dlambda = -J^T");
+  expect_near(size, nq, m, nv, "dF_lambda/dv = J");
+  expect_near(size + m, 0, m, nq, "dF_mu/dq = J N+");
+  // The costly blocks stay those of the first evaluation (the dynamics' derivatives).
+  EXPECT_EQ(residual_y.block(nq, 0, nv, size), before.block(nq, 0, nv, size));
 }
 
 // The H1 rig: a free platform with hydrodynamic loads, a loop, two pneumatic compensators

@@ -100,5 +100,79 @@ TEST(DenseLuLinearSolver, ZeroPivotIsARecoverableFailureAsForSundialsDense) {
   SUNLinSolFree(reference);
 }
 
+/// What make_dense_lu_linear_solver's `parts` read: a cj the test sets, and a refresh that
+/// swaps in other values of dF/dy.
+struct NewtonParts {
+  MatrixX residual_y, residual_yp, refreshed_residual_y;
+  double cj = 1.0;
+  bool refresh_pending = false;
+  sundials::NewtonMatrixParts parts() {
+    return {&residual_y, &residual_yp, [](void* self) { return static_cast<NewtonParts*>(self)->cj; },
+            [](void* self) {
+              auto& parts = *static_cast<NewtonParts*>(self);
+              if (!parts.refresh_pending) return false;
+              parts.residual_y = parts.refreshed_residual_y;
+              parts.refresh_pending = false;
+              return true;
+            },
+            this};
+  }
+};
+
+TEST(DenseLuLinearSolver, WithPartsSolvesForTheCurrentCjAndTheRefreshedMatrix) {
+  // IDA factors dF/dy + cj dF/dy' at setup, then solves with it while cj changes; with the
+  // parts the solver re-forms the matrix for the cj of each solve, and after a refresh.
+  // Reference: the same matrices formed here and solved by SUNDIALS' own dense solver.
+  const int n = 10;
+  std::mt19937_64 random(23);
+  std::uniform_real_distribution<double> entry(-1.0, 1.0);
+  NewtonParts newton;
+  newton.residual_y = MatrixX::NullaryExpr(n, n, [&] { return entry(random); });
+  newton.residual_yp = MatrixX::Zero(n, n);
+  newton.residual_yp.topLeftCorner(6, 6) =
+      MatrixX::Identity(6, 6) + 0.1 * MatrixX::NullaryExpr(6, 6, [&] { return entry(random); });
+  newton.refreshed_residual_y = newton.residual_y;
+  newton.refreshed_residual_y.bottomRows(2) += 0.2 * MatrixX::NullaryExpr(2, n, [&] { return entry(random); });
+  const VectorX b = VectorX::NullaryExpr(n, [&] { return entry(random); });
+
+  DenseSystem system(n);
+  newton.cj = 40.0;
+  system.A() = newton.residual_y + newton.cj * newton.residual_yp;  // what IDA's setup hands over
+  SUNLinearSolver solver = sundials::make_dense_lu_linear_solver(system.matrix, system.context, newton.parts());
+  ASSERT_EQ(SUNLinSolSetup(solver, system.matrix), SUNLS_SUCCESS);
+  const auto solve = [&] {
+    sundials::map(system.rhs) = b;
+    EXPECT_EQ(SUNLinSolSolve(solver, system.matrix, system.solution, system.rhs, 0.0), SUNLS_SUCCESS);
+    return VectorX(sundials::map(system.solution));
+  };
+  const auto relative_error = [&](const VectorX& x, const MatrixX& residual_y) {
+    const VectorX reference = sundials_dense_solution(residual_y + newton.cj * newton.residual_yp, b);
+    return (x - reference).norm() / reference.norm();
+  };
+  EXPECT_LT(relative_error(solve(), newton.residual_y), 1e-12);
+  newton.cj = 47.3;  // a new step size: the matrix of the setup is for cj = 40
+  EXPECT_LT(relative_error(solve(), newton.residual_y), 1e-12);
+  newton.refresh_pending = true;  // the same cj, new dF/dy
+  EXPECT_LT(relative_error(solve(), newton.refreshed_residual_y), 1e-12);
+  // A re-formed matrix that is singular (a zero column where dF/dy' has none) is a
+  // recoverable failure of the solve; the next solve forms the matrix again.
+  const MatrixX good = newton.refreshed_residual_y;
+  newton.refreshed_residual_y.col(n - 1).setZero();
+  newton.refresh_pending = true;
+  sundials::map(system.rhs) = b;
+  EXPECT_EQ(SUNLinSolSolve(solver, system.matrix, system.solution, system.rhs, 0.0), SUNLS_LUFACT_FAIL);
+  newton.refreshed_residual_y = good;
+  newton.refresh_pending = true;
+  EXPECT_LT(relative_error(solve(), good), 1e-12);
+  // Without the parts the solver keeps the factor of its setup: the new cj's answer differs.
+  SUNLinearSolver plain = sundials::make_dense_lu_linear_solver(system.matrix, system.context);
+  ASSERT_EQ(SUNLinSolSetup(plain, system.matrix), SUNLS_SUCCESS);
+  sundials::map(system.rhs) = b;
+  ASSERT_EQ(SUNLinSolSolve(plain, system.matrix, system.solution, system.rhs, 0.0), SUNLS_SUCCESS);
+  EXPECT_GT(relative_error(sundials::map(system.solution), newton.refreshed_residual_y), 1e-3);
+  SUNLinSolFree(plain);
+  SUNLinSolFree(solver);
+}
+
 }  // namespace
 }  // namespace heavesim

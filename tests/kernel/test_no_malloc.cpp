@@ -220,10 +220,16 @@ TEST(NoMalloc, DaeNewtonMatrixDoesNotAllocate) {
         system == &floating ? floating.initial_state(floating_q, VectorX::Constant(6, 0.3)) : four_bar.y;
     VectorX dae_y, dae_yp;
     form.dae_initial_values(0.0, state, dae_y, dae_yp);
-    MatrixX newton(dae_y.size(), dae_y.size());
-    form.jacobian(0.0, dae_y, dae_yp, 10.0, newton);  // first use sizes the workspaces
+    MatrixX residual_y(dae_y.size(), dae_y.size()), residual_yp(dae_y.size(), dae_y.size());
+    form.jacobian(0.0, dae_y, dae_yp, residual_y, residual_yp);  // first use sizes the workspaces
+    VectorX residual(dae_y.size()), moved = dae_y;
+    moved.head(system->model().nq).array() += 0.2;  // J has turned: the loop's blocks are rewritten
+    form.residual(0.0, moved, dae_yp, residual);
     ForbidAllocation forbid;
-    EXPECT_NO_THROW(form.jacobian(0.0, dae_y, dae_yp, 10.0, newton));
+    EXPECT_NO_THROW(form.jacobian(0.0, dae_y, dae_yp, residual_y, residual_yp));
+    bool refreshed = false;
+    EXPECT_NO_THROW(refreshed = form.refresh_jacobian(residual_y));
+    EXPECT_EQ(refreshed, system == &four_bar.system);  // the loop's blocks rewritten; none without a loop
   }
 }
 
@@ -246,6 +252,24 @@ TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
       EXPECT_EQ(SUNLinSolSetup(solver, matrix), SUNLS_SUCCESS);
       EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
       EXPECT_EQ(SUNLinSolSolve(solver, matrix, rhs, rhs, 0.0), SUNLS_SUCCESS);
+    });
+  }
+  SUNLinSolFree(solver);
+  // With the Newton matrix's parts: a solve at a new cj re-forms and factors the matrix.
+  struct Parts {
+    MatrixX residual_y, residual_yp;
+    double cj = 3.0;
+  } parts{Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n), MatrixX::Identity(n, n)};
+  solver = sundials::make_dense_lu_linear_solver(
+      matrix, context,
+      {&parts.residual_y, &parts.residual_yp, [](void* p) { return static_cast<Parts*>(p)->cj; },
+       [](void*) { return true; }, &parts});
+  {
+    ForbidAllocation forbid;
+    EXPECT_NO_THROW({
+      EXPECT_EQ(SUNLinSolSetup(solver, matrix), SUNLS_SUCCESS);
+      parts.cj = 4.5;
+      EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
     });
   }
   SUNLinSolFree(solver);
