@@ -3,7 +3,6 @@
 #include <sunmatrix/sunmatrix_dense.h>
 
 #include <Eigen/LU>
-#include <limits>
 #include <memory>
 #include <new>
 
@@ -12,19 +11,10 @@
 namespace heavesim::sundials {
 namespace {
 
-constexpr double kNoFactor = std::numeric_limits<double>::quiet_NaN();
-
 struct DenseLu {
-  DenseLu(Eigen::Index size, const NewtonMatrixParts& parts)
-      : factor(size),
-        right_hand_side(size),
-        parts(parts),
-        newton_matrix(parts.residual_y ? size : 0, parts.residual_y ? size : 0) {}
+  explicit DenseLu(Eigen::Index size) : factor(size), right_hand_side(size) {}
   Eigen::PartialPivLU<MatrixX> factor;  // LU of the last matrix set up
   VectorX right_hand_side;              // b's copy when x is b (Eigen's in-place permutation allocates)
-  NewtonMatrixParts parts;              // empty: solve with the matrix of the last setup
-  MatrixX newton_matrix;                // dF/dy + cj dF/dy' re-formed at a new cj
-  double factored_cj = kNoFactor;       // the cj of `factor` (with parts)
   int last_flag = SUNLS_SUCCESS;
 };
 
@@ -39,10 +29,12 @@ SUNLinearSolver_Type direct(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
 SUNLinearSolver_ID custom(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
 int nothing_to_initialize(SUNLinearSolver solver) { return content(solver).last_flag = SUNLS_SUCCESS; }
 
-/// Factors `matrix` into lu.factor (its own storage: same size, no allocation).
-template <typename Matrix>
-int factorize(DenseLu& lu, const Matrix& matrix) {
-  lu.factor.compute(matrix);
+int setup(SUNLinearSolver solver, SUNMatrix matrix) {
+  DenseLu& lu = content(solver);
+  if (SUNMatGetID(matrix) != SUNMATRIX_DENSE || SUNDenseMatrix_Rows(matrix) != lu.factor.rows() ||
+      SUNDenseMatrix_Columns(matrix) != lu.factor.rows())
+    return lu.last_flag = SUNLS_ILL_INPUT;
+  lu.factor.compute(dense(matrix));  // copies into the factor's own storage: same size, no allocation
   // An exactly zero pivot is a singular matrix, a recoverable failure as for
   // SUNLinSol_Dense (its GETRF returns the pivot's index). Partial pivoting takes the
   // largest entry of the column, so a zero pivot means a zero column below the diagonal.
@@ -52,29 +44,8 @@ int factorize(DenseLu& lu, const Matrix& matrix) {
   return lu.last_flag = SUNLS_SUCCESS;
 }
 
-int setup(SUNLinearSolver solver, SUNMatrix matrix) {
-  DenseLu& lu = content(solver);
-  if (SUNMatGetID(matrix) != SUNMATRIX_DENSE || SUNDenseMatrix_Rows(matrix) != lu.factor.rows() ||
-      SUNDenseMatrix_Columns(matrix) != lu.factor.rows())
-    return lu.last_flag = SUNLS_ILL_INPUT;
-  // The matrix IDA just filled is dF/dy + cj dF/dy' at the current cj.
-  const int flag = factorize(lu, dense(matrix));
-  lu.factored_cj = lu.parts.residual_y && flag == SUNLS_SUCCESS ? lu.parts.current_cj(lu.parts.user_data) : kNoFactor;
-  return flag;
-}
-
 int solve(SUNLinearSolver solver, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   DenseLu& lu = content(solver);
-  if (lu.parts.residual_y) {
-    const double cj = lu.parts.current_cj(lu.parts.user_data);
-    const bool refreshed = lu.parts.refresh && lu.parts.refresh(lu.parts.user_data);
-    if (cj != lu.factored_cj || refreshed) {  // NaN (no factor) never equals cj
-      lu.newton_matrix.noalias() = *lu.parts.residual_y + cj * *lu.parts.residual_yp;
-      lu.factored_cj = kNoFactor;
-      if (factorize(lu, lu.newton_matrix) != SUNLS_SUCCESS) return lu.last_flag;  // recoverable
-      lu.factored_cj = cj;
-    }
-  }
   Eigen::Map<VectorX> solution = map(x);
   if (N_VGetArrayPointer(x) == N_VGetArrayPointer(b)) {
     lu.right_hand_side = map(b);
@@ -89,7 +60,7 @@ sunindextype last_flag(SUNLinearSolver solver) { return content(solver).last_fla
 
 int space(SUNLinearSolver solver, long* real_words, long* integer_words) {
   const Eigen::Index n = content(solver).factor.rows();
-  *real_words = static_cast<long>(n * n + content(solver).newton_matrix.size());
+  *real_words = static_cast<long>(n * n);
   *integer_words = static_cast<long>(2 * n);  // the row transpositions and the permutation
   return SUNLS_SUCCESS;
 }
@@ -104,8 +75,8 @@ int free_solver(SUNLinearSolver solver) {
 
 }  // namespace
 
-SUNLinearSolver make_dense_lu_linear_solver(SUNMatrix matrix, SUNContext context, const NewtonMatrixParts& parts) {
-  auto lu = std::make_unique<DenseLu>(SUNDenseMatrix_Rows(matrix), parts);
+SUNLinearSolver make_dense_lu_linear_solver(SUNMatrix matrix, SUNContext context) {
+  auto lu = std::make_unique<DenseLu>(SUNDenseMatrix_Rows(matrix));
   SUNLinearSolver solver = SUNLinSolNewEmpty(context);
   if (!solver) throw std::bad_alloc();
   solver->content = lu.release();

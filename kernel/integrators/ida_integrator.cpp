@@ -12,6 +12,7 @@
 #include <string>
 
 #include "kernel/integrators/dense_lu_linear_solver.hpp"
+#include "kernel/integrators/reforming_linear_solver.hpp"
 #include "kernel/integrators/serial_vector.hpp"
 
 namespace heavesim {
@@ -170,9 +171,6 @@ void IdaIntegrator::restart(double t0) {
   // pattern (with a second look at a nudged state, so that values that happen to be
   // zero here do not drop out of the pattern).
   const bool analytic = dae_.jacobian(t0, work_y_, work_yp_, residual_y_, residual_yp_);
-  // Position multipliers: loops, drivers, locks, active stops (rows kept in the DAE).
-  const bool position_multipliers = constraint_scale_.size() > 0 && constraint_scale_.maxCoeff() > 0.0;
-  bool parts_in_use = false;
   work_jacobian_.resize(n, n);
   if (analytic && settings_.linear_solver == LinearSolver::sparse) {
     MatrixX pattern = residual_y_.cwiseAbs() + residual_yp_.cwiseAbs();
@@ -187,44 +185,50 @@ void IdaIntegrator::restart(double t0) {
     linear_solver_ = SUNLinSol_KLU(y_nv_, matrix_, context_);
   } else {
     matrix_ = SUNDenseMatrix(n, n, context_);
-    // With the system's own parts, the LU is re-formed for each new cj and after the
-    // system refreshed its cheap blocks (make_dense_lu_linear_solver,
-    // DaeSystem::refresh_jacobian). Why: with loops, the position multipliers mu fail
-    // Newton's test on a matrix that IDA still deems good. mu reaches q through
-    // q' = N (v - J^T mu) and q - q_pred = (q' - q'_pred) / cj, so the Schur complement
-    // that fixes mu is about J J^T / cj, and the first correction of mu is typically
-    // 1e4-1e5 of its weight (the position tolerance over solver.constraint_tolerance):
-    // IDA's four iterations pass the test only at convergence rates of a few percent. A
-    // matrix formed at another cj (IDA keeps one while cj stays within 0.6 to 1.67 of
-    // its own) converges at |1 - cj / cj_old|, one formed a few steps back at the
-    // relative turn of J since. Slider-crank L1, rtol = atol = 1e-6: 65 convergence
-    // failures in 286 steps, 85 Jacobian evaluations; re-formed at each cj, 47 in 268; with
-    // J's blocks refreshed too, 3 in 175 steps and 18 evaluations (docs/performance.md, "Issue
-    // #18, ninth round"). Re-forming costs an n x n sum and an LU; evaluating the parts
-    // again costs the dynamics' derivatives. (The sparse path keeps IDA's own policy.)
-    // Only with position multipliers (loops, drivers, locks, active stops): without any,
-    // re-forming turned no convergence failure into a success, and IDA's acceptance of a
-    // first iteration on the old matrix gave the drilling case 6110 steps against 8765.
-    sundials::NewtonMatrixParts parts;
-    if (analytic && position_multipliers)
-      parts = {&residual_y_, &residual_yp_,
-               [](void* integrator) {
-                 double cj = std::numeric_limits<double>::quiet_NaN();  // no cj: the solver re-forms
-                 IDAGetCurrentCj(static_cast<IdaIntegrator*>(integrator)->ida_, &cj);
-                 return cj;
-               },
-               [](void* integrator) {
-                 auto* self = static_cast<IdaIntegrator*>(integrator);
-                 return self->dae_.refresh_jacobian(self->residual_y_);  // noexcept
-               },
-               this};
-    linear_solver_ = sundials::make_dense_lu_linear_solver(matrix_, context_, parts);
-    parts_in_use = parts.residual_y != nullptr;
+    linear_solver_ = sundials::make_dense_lu_linear_solver(matrix_, context_);
+  }
+  // With position multipliers (loops, drivers, locks, active stops: rows kept in the DAE)
+  // the Newton matrix is re-formed from the system's parts for each new cj and after the
+  // system refreshed its cheap blocks (reforming_linear_solver.hpp,
+  // DaeSystem::refresh_jacobian). Why: the multipliers mu fail Newton's test on a matrix
+  // that IDA still deems good. mu reaches q through q' = N (v - J^T mu) and
+  // q - q_pred = (q' - q'_pred) / cj, so the Schur complement that fixes mu is about
+  // J J^T / cj, and the first correction of mu is typically 1e4-1e5 of its weight (the
+  // position tolerance over solver.constraint_tolerance): IDA's four iterations pass the
+  // test only at convergence rates of a few percent. A matrix formed at another cj (IDA
+  // keeps one while cj stays within 0.6 to 1.67 of its own) converges at
+  // |1 - cj / cj_old|, one formed a few steps back at the relative turn of J since.
+  // Slider-crank L1, rtol = atol = 1e-6: 65 convergence failures in 286 steps, 85
+  // Jacobian evaluations; re-formed at each cj, 47 in 268; with J's blocks refreshed too,
+  // 3 in 175 steps and 18 evaluations (docs/performance.md, "Issue #18, ninth round").
+  // Without position multipliers IDA's own policy stays: re-forming turned no convergence
+  // failure into a success there, and IDA's acceptance of a first iteration on the old
+  // matrix gave the drilling case 6110 steps against 8765.
+  const bool position_multipliers = constraint_scale_.size() > 0 && constraint_scale_.maxCoeff() > 0.0;
+  const bool reform = analytic && position_multipliers;
+  if (reform) {
+    const sundials::NewtonMatrixSource source{
+        [](void* integrator) {
+          double cj = std::numeric_limits<double>::quiet_NaN();  // no cj: the solver re-forms
+          IDAGetCurrentCj(static_cast<IdaIntegrator*>(integrator)->ida_, &cj);
+          return cj;
+        },
+        [](void* integrator) {
+          auto* self = static_cast<IdaIntegrator*>(integrator);
+          return self->dae_.refresh_jacobian(self->residual_y_);  // noexcept
+        },
+        [](void* integrator, double cj, SUNMatrix matrix) {
+          auto* self = static_cast<IdaIntegrator*>(integrator);
+          self->work_jacobian_.noalias() = self->residual_y_ + cj * self->residual_yp_;
+          self->store_jacobian(matrix);
+        },
+        this};
+    linear_solver_ = sundials::make_reforming_linear_solver(linear_solver_, source, context_);
   }
   IDASetLinearSolver(ida_, linear_solver_, matrix_);
   if (analytic) IDASetJacFn(ida_, &IdaIntegrator::jacobian);
   // The solution is for the current cj already: IDA's scaling for a stale cj would spoil it.
-  if (parts_in_use) IDASetLinearSolutionScaling(ida_, SUNFALSE);
+  if (reform) IDASetLinearSolutionScaling(ida_, SUNFALSE);
   // Events: located where a function falls through zero (a gap closing, a stop's force
   // turning to a pull); one that is zero at t0 waits until it has left zero.
   if (const int count = dae_.event_count(); count > 0) {

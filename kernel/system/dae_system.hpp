@@ -39,9 +39,9 @@ class DaeSystem : public FailureDiagnosis {
   /// Brings the blocks of `residual_y` (the dF/dy of the last jacobian() call) that are
   /// cheap to evaluate up to the state of the last residual() call where they have changed
   /// enough to slow Newton's iteration, keeping the costly ones; true when it changed any.
-  /// IDA's dense path with position multipliers calls it before each linear solve and
-  /// re-forms the Newton matrix when it returns true. Called from SUNDIALS' C code: it must
-  /// not throw. Default: nothing.
+  /// IDA with position multipliers calls it before each linear solve and re-forms the
+  /// Newton matrix when it returns true (reforming_linear_solver.hpp). Called from
+  /// SUNDIALS' C code: it must not throw. Default: nothing.
   virtual bool refresh_jacobian(MatrixX& /*residual_y*/) noexcept { return false; }
 
   // --- events (Simbody's event triggers and handlers): functions g_i(t, y) whose fall

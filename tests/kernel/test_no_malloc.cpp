@@ -25,6 +25,7 @@
 #include "kernel/elements/ground_contact.hpp"
 #include "kernel/elements/spring_damper.hpp"
 #include "kernel/integrators/dense_lu_linear_solver.hpp"
+#include "kernel/integrators/reforming_linear_solver.hpp"
 #include "kernel/integrators/integrator.hpp"
 #include "kernel/integrators/sundials_support.hpp"
 #include "kernel/model/model_builder.hpp"
@@ -255,15 +256,21 @@ TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
     });
   }
   SUNLinSolFree(solver);
-  // With the Newton matrix's parts: a solve at a new cj re-forms and factors the matrix.
+  // Wrapped to re-form the Newton matrix: a solve at a new cj re-forms and factors it.
   struct Parts {
-    MatrixX residual_y, residual_yp;
+    MatrixX residual_y, residual_yp, work;
     double cj = 3.0;
-  } parts{Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n), MatrixX::Identity(n, n)};
-  solver = sundials::make_dense_lu_linear_solver(
-      matrix, context,
-      {&parts.residual_y, &parts.residual_yp, [](void* p) { return static_cast<Parts*>(p)->cj; },
-       [](void*) { return true; }, &parts});
+  } parts{Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n), MatrixX::Identity(n, n), MatrixX(n, n)};
+  solver = sundials::make_reforming_linear_solver(
+      sundials::make_dense_lu_linear_solver(matrix, context),
+      {[](void* p) { return static_cast<Parts*>(p)->cj; }, [](void*) { return true; },
+       [](void* p, double cj, SUNMatrix m) {
+         auto& parts = *static_cast<Parts*>(p);
+         parts.work.noalias() = parts.residual_y + cj * parts.residual_yp;
+         Eigen::Map<MatrixX>(SUNDenseMatrix_Data(m), parts.work.rows(), parts.work.cols()) = parts.work;
+       },
+       &parts},
+      context);
   {
     ForbidAllocation forbid;
     EXPECT_NO_THROW({
