@@ -83,16 +83,15 @@ int IdaIntegrator::jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vect
     self->work_y_ = sundials::map(y);
     self->work_yp_ = sundials::map(yp);
     self->dae_.jacobian(t, self->work_y_, self->work_yp_, self->residual_y_, self->residual_yp_);
-    self->work_jacobian_.noalias() = self->residual_y_ + cj * self->residual_yp_;
-    self->store_jacobian(J);
+    self->store_newton_matrix(cj, J);
   });
 }
 
-void IdaIntegrator::store_jacobian(SUNMatrix J) const {
-  const int n = static_cast<int>(work_jacobian_.rows());
+void IdaIntegrator::store_newton_matrix(double cj, SUNMatrix J) const {
+  const int n = static_cast<int>(residual_y_.rows());
   if (SUNMatGetID(J) == SUNMATRIX_DENSE) {
     for (int c = 0; c < n; ++c)
-      Eigen::Map<VectorX>(SUNDenseMatrix_Column(J, c), n) = work_jacobian_.col(c);
+      Eigen::Map<VectorX>(SUNDenseMatrix_Column(J, c), n) = residual_y_.col(c) + cj * residual_yp_.col(c);
     return;
   }
   // Compressed sparse columns on the pattern fixed at initialization.
@@ -104,7 +103,7 @@ void IdaIntegrator::store_jacobian(SUNMatrix J) const {
     column_start[c] = k;
     while (k < static_cast<int>(sparsity_.size()) && sparsity_[k].second == c) {
       row_index[k] = sparsity_[k].first;
-      values[k] = work_jacobian_(sparsity_[k].first, c);
+      values[k] = residual_y_(sparsity_[k].first, c) + cj * residual_yp_(sparsity_[k].first, c);
       ++k;
     }
   }
@@ -171,7 +170,6 @@ void IdaIntegrator::restart(double t0) {
   // pattern (with a second look at a nudged state, so that values that happen to be
   // zero here do not drop out of the pattern).
   const bool analytic = dae_.jacobian(t0, work_y_, work_yp_, residual_y_, residual_yp_);
-  work_jacobian_.resize(n, n);
   if (analytic && settings_.linear_solver == LinearSolver::sparse) {
     MatrixX pattern = residual_y_.cwiseAbs() + residual_yp_.cwiseAbs();
     VectorX nudged = work_y_ + 1e-3 * VectorX::Ones(n).cwiseProduct(work_y_.cwiseAbs() + VectorX::Ones(n));
@@ -190,15 +188,9 @@ void IdaIntegrator::restart(double t0) {
   // With position multipliers (loops, drivers, locks, active stops: rows kept in the DAE)
   // the Newton matrix is re-formed from the system's parts for each new cj and after the
   // system refreshed its cheap blocks (reforming_linear_solver.hpp,
-  // DaeSystem::refresh_jacobian). Why: the multipliers mu fail Newton's test on a matrix
-  // that IDA still deems good. mu reaches q through q' = N (v - J^T mu) and
-  // q - q_pred = (q' - q'_pred) / cj, so the Schur complement that fixes mu is about
-  // J J^T / cj, and the first correction of mu is typically 1e4-1e5 of its weight (the
-  // position tolerance over solver.constraint_tolerance): IDA's four iterations pass the
-  // test only at convergence rates of a few percent. A matrix formed at another cj (IDA
-  // keeps one while cj stays within 0.6 to 1.67 of its own) converges at
-  // |1 - cj / cj_old|, one formed a few steps back at the relative turn of J since.
-  // Slider-crank L1, rtol = atol = 1e-6: 65 convergence failures in 286 steps, 85
+  // DaeSystem::refresh_jacobian): on a matrix formed at another cj, or before a loop
+  // turned, the multipliers mu converge too slowly for IDA's four iterations
+  // (docs/physics/constraints-and-integration.md §5). Slider-crank L1, rtol = atol = 1e-6: 65 convergence failures in 286 steps, 85
   // Jacobian evaluations; re-formed at each cj, 47 in 268; with J's blocks refreshed too,
   // 3 in 175 steps and 18 evaluations (docs/performance.md, "Issue #18, ninth round").
   // Without position multipliers IDA's own policy stays: re-forming turned no convergence
@@ -218,9 +210,7 @@ void IdaIntegrator::restart(double t0) {
           return self->dae_.refresh_jacobian(self->residual_y_);  // noexcept
         },
         [](void* integrator, double cj, SUNMatrix matrix) {
-          auto* self = static_cast<IdaIntegrator*>(integrator);
-          self->work_jacobian_.noalias() = self->residual_y_ + cj * self->residual_yp_;
-          self->store_jacobian(matrix);
+          static_cast<IdaIntegrator*>(integrator)->store_newton_matrix(cj, matrix);
         },
         this};
     linear_solver_ = sundials::make_reforming_linear_solver(linear_solver_, source, context_);

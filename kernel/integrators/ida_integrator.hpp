@@ -37,8 +37,9 @@ class IdaIntegrator : public Integrator {
   static int jacobian(double t, double cj, N_Vector y, N_Vector yp, N_Vector r, SUNMatrix J, void* user_data,
                       N_Vector, N_Vector, N_Vector);
   void release();
-  /// Copies the dense Jacobian into J (dense, or the fixed sparsity pattern of KLU).
-  void store_jacobian(SUNMatrix J) const;
+  /// Writes dF/dy + cj dF/dy' of the last evaluation into J (dense, or the fixed sparsity
+  /// pattern of KLU).
+  void store_newton_matrix(double cj, SUNMatrix J) const;
 
   IntegratorSettings settings_;
   DaeSystem& dae_;
@@ -51,7 +52,6 @@ class IdaIntegrator : public Integrator {
   VectorX state_, work_y_, work_yp_, work_r_;
   VectorX constraint_scale_;  // DaeSystem::algebraic_constraint_scales
   MatrixX residual_y_, residual_yp_;  // dF/dy and dF/dy' of the last evaluation (DaeSystem::jacobian)
-  MatrixX work_jacobian_;              // dF/dy + cj dF/dy' for IDA's matrix
   std::vector<std::pair<int, int>> sparsity_;  // (row, column) kept by the sparse matrix, column-major order
   std::vector<int> events_found_;             // IDAGetRootInfo
   VectorX event_values_;

@@ -294,12 +294,10 @@ void GglDaeForm::write_constraint_blocks(const MatrixX& kept_jacobian, MatrixX& 
 }
 
 bool GglDaeForm::refresh_jacobian(MatrixX& residual_y) noexcept {
-  // The loops turn with the mechanism. The position multipliers' Schur complement is
-  // about J J^T / cj, so a J that has turned by a relative d since the matrix was formed
-  // makes their iteration converge at a rate of about d; their first correction is
-  // typically 1e4-1e5 of their weight (the position tolerance over the constraint
-  // tolerance), which IDA's four iterations reduce below its test only at rates of a few
-  // percent. On the slider-crank L1 at rtol = atol = 1e-6, with J kept from the last
+  // The loops turn with the mechanism, and a J that has turned by a relative d since the
+  // matrix was formed makes the position multipliers converge at a rate of about d, too
+  // slow for IDA's test beyond a few percent (docs/physics/constraints-and-integration.md
+  // §5). On the slider-crank L1 at rtol = atol = 1e-6, with J kept from the last
   // evaluation (0.05-0.3 rad of crank earlier) they converged at 0.04-0.4 and failed
   // the test 47 times in 268 steps. So J's blocks are rewritten from the last residual's
   // J (the Newton iterate's) once a row has moved by 1 % of its largest entry; N and N+

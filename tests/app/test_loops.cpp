@@ -61,6 +61,30 @@ TEST(Loops, OverconstrainedCrownBlockReportsRedundancyAndCarriesTheWeight) {
   }
 }
 
+/// dF/dy + cj dF/dy' of `system` at (t, y, yp) by central differences of its residual
+/// (step 1e-6 in y and, unless cj = 0, in yp).
+MatrixX residual_differences(GglDaeForm& system, double t, const VectorX& y, const VectorX& yp, double cj) {
+  const auto n = y.size();
+  MatrixX numeric(n, n);
+  VectorX plus(n), minus(n);
+  const double h = 1e-6;
+  for (Eigen::Index k = 0; k < n; ++k) {
+    VectorX y_plus = y, y_minus = y, yp_plus = yp, yp_minus = yp;
+    y_plus[k] += h;
+    y_minus[k] -= h;
+    system.residual(t, y_plus, yp, plus);
+    system.residual(t, y_minus, yp, minus);
+    numeric.col(k) = (plus - minus) / (2 * h);
+    if (cj == 0.0) continue;
+    yp_plus[k] += h;
+    yp_minus[k] -= h;
+    system.residual(t, y, yp_plus, plus);
+    system.residual(t, y, yp_minus, minus);
+    numeric.col(k) += cj * (plus - minus) / (2 * h);
+  }
+  return numeric;
+}
+
 /// The GGL form's Newton matrix of `case_path` at a state moved away from the consistent
 /// one, and central differences of its residual (step 1e-6 in y and in yp).
 std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& case_path) {
@@ -80,23 +104,7 @@ std::pair<MatrixX, MatrixX> newton_matrix_and_differences(const std::string& cas
   MatrixX residual_y, residual_yp;
   EXPECT_TRUE(system.jacobian(0.3, y, yp, residual_y, residual_yp));
   const MatrixX analytic = residual_y + cj * residual_yp;
-  MatrixX numeric(n, n);
-  VectorX plus(n), minus(n);
-  const double h = 1e-6;
-  for (int k = 0; k < n; ++k) {
-    VectorX y_plus = y, y_minus = y, yp_plus = yp, yp_minus = yp;
-    y_plus[k] += h;
-    y_minus[k] -= h;
-    system.residual(0.3, y_plus, yp, plus);
-    system.residual(0.3, y_minus, yp, minus);
-    numeric.col(k) = (plus - minus) / (2 * h);
-    yp_plus[k] += h;
-    yp_minus[k] -= h;
-    system.residual(0.3, y, yp_plus, plus);
-    system.residual(0.3, y, yp_minus, minus);
-    numeric.col(k) += cj * (plus - minus) / (2 * h);
-  }
-  return {analytic, numeric};
+  return {analytic, residual_differences(system, 0.3, y, yp, cj)};
 }
 
 TEST(Loops, DaeNewtonMatrixMatchesFiniteDifferencesOfTheResidual) {
@@ -130,17 +138,7 @@ TEST(Loops, RefreshedNewtonMatrixHasTheLoopBlocksOfTheNewState) {
   y[0] += 0.3;
   system.residual(0.0, y, yp, r);
   ASSERT_TRUE(system.refresh_jacobian(residual_y));
-  const double h = 1e-6;
-  MatrixX numeric(n, n);
-  VectorX plus(n), minus(n);
-  for (int k = 0; k < n; ++k) {
-    VectorX y_plus = y, y_minus = y;
-    y_plus[k] += h;
-    y_minus[k] -= h;
-    system.residual(0.0, y_plus, yp, plus);
-    system.residual(0.0, y_minus, yp, minus);
-    numeric.col(k) = (plus - minus) / (2 * h);
-  }
+  const MatrixX numeric = residual_differences(system, 0.0, y, yp, 0.0);  // dF/dy alone
   const auto expect_near = [&](int row, int column, int rows, int columns, const char* what) {
     const MatrixX difference = residual_y.block(row, column, rows, columns) - numeric.block(row, column, rows, columns);
     const double block_scale = numeric.block(row, column, rows, columns).cwiseAbs().maxCoeff();

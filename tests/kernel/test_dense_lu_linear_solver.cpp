@@ -10,6 +10,7 @@
 
 #include "kernel/integrators/dense_lu_linear_solver.hpp"
 #include "kernel/integrators/sundials_support.hpp"
+#include "tests/kernel/sundials_dense_reference.hpp"
 
 namespace heavesim {
 namespace {
@@ -29,19 +30,6 @@ struct DenseSystem {
     return Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), SUNDenseMatrix_Rows(matrix), SUNDenseMatrix_Columns(matrix));
   }
 };
-
-/// x from SUNLinSol_Dense for A x = b (it factors A in place, so on a copy).
-VectorX sundials_dense_solution(const MatrixX& A, const VectorX& b) {
-  DenseSystem system(static_cast<int>(A.rows()));
-  system.A() = A;
-  sundials::map(system.rhs) = b;
-  SUNLinearSolver solver = SUNLinSol_Dense(system.rhs, system.matrix, system.context);
-  EXPECT_EQ(SUNLinSolSetup(solver, system.matrix), SUNLS_SUCCESS);
-  EXPECT_EQ(SUNLinSolSolve(solver, system.matrix, system.solution, system.rhs, 0.0), SUNLS_SUCCESS);
-  const VectorX x = sundials::map(system.solution);
-  SUNLinSolFree(solver);
-  return x;
-}
 
 TEST(DenseLuLinearSolver, SolvesAsSundialsDenseSolverDoes) {
   std::mt19937_64 random(11);
@@ -68,7 +56,7 @@ TEST(DenseLuLinearSolver, SolvesAsSundialsDenseSolverDoes) {
     EXPECT_LT(residual, 1e-14) << "n = " << n;
     // The same elimination as SUNDIALS' solver: agreement to round-off times the condition.
     const double condition = A.jacobiSvd().singularValues()(0) / A.jacobiSvd().singularValues()(n - 1);
-    const VectorX reference = sundials_dense_solution(A, b);
+    const VectorX reference = testing::sundials_dense_solution(A, b);
     EXPECT_LT((x - reference).norm() / reference.norm(), 1e-15 * condition) << "n = " << n << ", cond " << condition;
 
     // The interface allows the same vector as right-hand side and solution (IDA 6.4 passes

@@ -4,7 +4,6 @@
 // solver (SUNLinSol_Dense, a separate implementation).
 #include <gtest/gtest.h>
 
-#include <sunlinsol/sunlinsol_dense.h>
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
@@ -14,27 +13,10 @@
 #include "kernel/integrators/dense_lu_linear_solver.hpp"
 #include "kernel/integrators/reforming_linear_solver.hpp"
 #include "kernel/integrators/sundials_support.hpp"
+#include "tests/kernel/sundials_dense_reference.hpp"
 
 namespace heavesim {
 namespace reforming_linear_solver_test {  // apart from its unity-build neighbours' names
-
-/// x from SUNLinSol_Dense for A x = b.
-VectorX sundials_dense_solution(const MatrixX& A, const VectorX& b, SUNContext context) {
-  const int n = static_cast<int>(A.rows());
-  SUNMatrix matrix = SUNDenseMatrix(n, n, context);
-  N_Vector rhs = N_VNew_Serial(n, context), solution = N_VNew_Serial(n, context);
-  Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n) = A;
-  sundials::map(rhs) = b;
-  SUNLinearSolver solver = SUNLinSol_Dense(rhs, matrix, context);
-  EXPECT_EQ(SUNLinSolSetup(solver, matrix), SUNLS_SUCCESS);
-  EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
-  const VectorX x = sundials::map(solution);
-  SUNLinSolFree(solver);
-  N_VDestroy(rhs);
-  N_VDestroy(solution);
-  SUNMatDestroy(matrix);
-  return x;
-}
 
 /// The integrator's side: the parts, the cj IDA solves with, a refresh that swaps in other
 /// values of dF/dy, and the matrix written densely or on a full compressed-column pattern.
@@ -109,7 +91,7 @@ void check_reforming(bool sparse) {
     return VectorX(sundials::map(solution));
   };
   const auto relative_error = [&](const VectorX& x, const MatrixX& residual_y) {
-    const VectorX reference = sundials_dense_solution(residual_y + parts.cj * parts.residual_yp, b, context);
+    const VectorX reference = testing::sundials_dense_solution(residual_y + parts.cj * parts.residual_yp, b);
     return (x - reference).norm() / reference.norm();
   };
   EXPECT_LT(relative_error(solve(), parts.residual_y), 1e-12);
