@@ -20,7 +20,7 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
   const Model& model = system_.model();
   const Data& data = system_.data();
   for (Passive& p : passive_) {
-    const PneumaticState s = p.element->evaluate(t, model, data, y.segment(p.offset, p.element->state_size()), nullptr);
+    const PneumaticState& s = p.element->evaluated(t, model, data, y.segment(p.offset, p.element->state_size()));
     p.monitor.observe(s.stroke);
     p.max_stroke = std::max(p.max_stroke, s.stroke);
     p.min_stroke = std::min(p.min_stroke, s.stroke);
@@ -45,7 +45,7 @@ void CompensatorSummary::observe(double t, const VectorX& y) {
       c.lifted_samples += force <= 0.0;
     }
   for (Active& a : active_) {
-    const ActiveState s = a.element->evaluate(t, model, data, y.segment(a.offset, a.element->state_size()), nullptr);
+    const ActiveState& s = a.element->evaluated(t, model, data, y.segment(a.offset, a.element->state_size()));
     a.max_force = std::max(a.max_force, std::abs(s.force));
     a.max_error = std::max(a.max_error, std::abs(s.error));
     a.max_supply_power = std::max(a.max_supply_power, s.supply_power);

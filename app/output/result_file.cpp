@@ -62,6 +62,17 @@ bool stored_type_is(hid_t stored, hid_t type) {
   return true;
 }
 
+/// The dataspace of an attribute of `values` values (or records): a scalar for a single
+/// value when `scalar_when_single`, else one dimension.
+Handle attribute_space(hsize_t values, bool scalar_when_single) {
+  return Handle(scalar_when_single && values == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &values, nullptr));
+}
+
+/// Records of a compound attribute: one per fields.size() values.
+hsize_t record_count(const std::vector<std::string>& fields, const std::vector<double>& values) {
+  return fields.empty() ? 0 : values.size() / fields.size();
+}
+
 // No chunk cache: a write goes to disk in H5Dwrite, where its failure is seen, and a
 // dataset never holds data that closing it would have to write.
 Handle uncached_dataset_access() {
@@ -130,7 +141,10 @@ void ResultFile::check_usable() const {
 
 void ResultFile::abandon() {
   // Nothing more reaches the disk: the file stays as the last complete flush left it.
-  for (Series& series : series_) series.dataset.abandon();
+  for (Series& series : series_) {
+    for (Series::KeptAttribute& kept : series.kept_attributes) kept.attribute.abandon();
+    series.dataset.abandon();
+  }
   file_.abandon();
 }
 
@@ -151,7 +165,8 @@ Handle ResultFile::open_object(const std::string& object_path) {
   return object;
 }
 
-void ResultFile::write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data) {
+Handle ResultFile::write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data,
+                                   std::vector<Series::KeptAttribute>* open_attributes) {
   Handle attribute;
   if (H5Aexists(object, name.c_str()) > 0) {
     attribute = Handle(H5Aopen(object, name.c_str(), H5P_DEFAULT));
@@ -160,6 +175,9 @@ void ResultFile::write_attribute(hid_t object, const std::string& name, hid_t ty
     const Handle stored_space(H5Aget_space(attribute.get()));
     if (!stored_type_is(stored_type.get(), type) || H5Sextent_equal(stored_space.get(), space) <= 0) {
       attribute.reset();
+      // HDF5 deletes an attribute safely with none of its object's attributes open; the
+      // series' kept ones are opened again as they are written.
+      if (open_attributes) open_attributes->clear();
       check(H5Adelete(object, name.c_str()) >= 0, "cannot write result file");
     }
   }
@@ -171,16 +189,15 @@ void ResultFile::write_attribute(hid_t object, const std::string& name, hid_t ty
   }
   check(attribute.valid(), "cannot write result file");
   check(H5Awrite(attribute.get(), type, data) >= 0, "cannot write result file");
+  return attribute;
 }
 
 void ResultFile::write_doubles(hid_t object, const std::string& name, const std::vector<double>& values) {
-  const hsize_t size = values.size();
-  const Handle space(size == 1 ? H5Screate(H5S_SCALAR) : H5Screate_simple(1, &size, nullptr));
+  const Handle space = attribute_space(values.size(), true);
   write_attribute(object, name, H5T_NATIVE_DOUBLE, space.get(), values.data());
 }
 
-void ResultFile::write_records(hid_t object, const std::string& name, const std::vector<std::string>& fields,
-                               const std::vector<double>& values) {
+hid_t ResultFile::record_type(const std::vector<std::string>& fields) {
   auto known = std::find_if(record_types_.begin(), record_types_.end(),
                             [&fields](const auto& entry) { return entry.first == fields; });
   if (known == record_types_.end()) {
@@ -192,9 +209,27 @@ void ResultFile::write_records(hid_t object, const std::string& name, const std:
     record_types_.emplace_back(fields, std::move(type));
     known = record_types_.end() - 1;
   }
-  const hsize_t rows = fields.empty() ? 0 : values.size() / fields.size();
-  const Handle space(H5Screate_simple(1, &rows, nullptr));
-  write_attribute(object, name, known->second.get(), space.get(), values.data());
+  return known->second.get();
+}
+
+void ResultFile::write_records(hid_t object, const std::string& name, const std::vector<std::string>& fields,
+                               const std::vector<double>& values) {
+  const Handle space = attribute_space(record_count(fields, values), false);
+  write_attribute(object, name, record_type(fields), space.get(), values.data());
+}
+
+void ResultFile::write_series_attribute(Series& series, const std::string& name, hid_t type, hsize_t values,
+                                        bool scalar_when_single, const void* data) {
+  auto kept = std::find_if(series.kept_attributes.begin(), series.kept_attributes.end(),
+                           [&name](const Series::KeptAttribute& attribute) { return attribute.name == name; });
+  if (kept != series.kept_attributes.end() && kept->type == type && kept->values == values) {
+    check(H5Awrite(kept->attribute.get(), type, data) >= 0, "cannot write result file");
+    return;
+  }
+  if (kept != series.kept_attributes.end()) series.kept_attributes.erase(kept);  // another type or shape
+  const Handle space = attribute_space(values, scalar_when_single);
+  Handle attribute = write_attribute(series.dataset.get(), name, type, space.get(), data, &series.kept_attributes);
+  series.kept_attributes.push_back({name, std::move(attribute), type, values});
 }
 
 void ResultFile::write_text_attribute(hid_t object, const std::string& name, const std::string& value) {
@@ -232,13 +267,14 @@ void ResultFile::set_record_attribute(const std::string& object_path, const std:
 
 void ResultFile::set_attribute(int series, const std::string& name, const std::vector<double>& values) {
   ready_to_write();
-  write_doubles(series_.at(series).dataset.get(), name, values);
+  write_series_attribute(series_.at(series), name, H5T_NATIVE_DOUBLE, values.size(), true, values.data());
 }
 
 void ResultFile::set_record_attribute(int series, const std::string& name, const std::vector<std::string>& fields,
                                      const std::vector<double>& values) {
   ready_to_write();
-  write_records(series_.at(series).dataset.get(), name, fields, values);
+  write_series_attribute(series_.at(series), name, record_type(fields), record_count(fields, values), false,
+                         values.data());
 }
 
 void ResultFile::write_text(const std::string& dataset_path, const std::string& text, const std::string& description) {
@@ -283,7 +319,7 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
     throw std::logic_error("ResultFile: a series added after samples: " + dataset_path);
   series.staging_offset = staging_width_;
   staging_width_ += series.width;
-  staging_.assign(staged_rows * staging_width_, 0.0);  // no sample before the layout stands
+  staging_.resize(staged_rows * staging_width_);  // no sample before the layout stands (resize: amortized, not a fill per series)
   series_.push_back(std::move(series));
   const int id = static_cast<int>(series_.size()) - 1;
   const hid_t object = series_[id].dataset.get();
@@ -292,7 +328,7 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   // The per-column statistics written at the end exist from the start ("not computed
   // yet", NaN, until then): writing them then overwrites in place, allocating nothing.
   const std::vector<double> not_computed(std::max(columns, 1), std::nan(""));
-  for (const char* statistic : series_statistics) write_doubles(object, statistic, not_computed);
+  for (const char* statistic : series_statistics) set_attribute(id, statistic, not_computed);
   return id;
 }
 
@@ -433,7 +469,11 @@ void ResultFile::close() {
       series.extent = samples_written_;
     }
     flush_file();
-    for (Series& series : series_) check(series.dataset.close(), "cannot close result file");
+    for (Series& series : series_) {
+      for (Series::KeptAttribute& kept : series.kept_attributes)
+        check(kept.attribute.close(), "cannot close result file");
+      check(series.dataset.close(), "cannot close result file");
+    }
     check(file_.close(), "cannot close result file");
   } catch (...) {
     abandon();

@@ -79,7 +79,9 @@ class ResultFile {
   void set_record_attribute(const std::string& object_path, const std::string& name,
                             const std::vector<std::string>& fields, const std::vector<double>& values);
   /// The same two on a series (add_series' id), through the dataset it holds open: no
-  /// lookup by path (a run writes a dozen attributes on each of its series).
+  /// lookup by path (a run writes a dozen attributes on each of its series). A series'
+  /// attributes are written this way only: the by-path writes above would not see the
+  /// attributes the series keeps open (Series::kept_attributes).
   void set_attribute(int series, const std::string& name, const std::vector<double>& values);
   void set_record_attribute(int series, const std::string& name, const std::vector<std::string>& fields,
                             const std::vector<double>& values);
@@ -154,7 +156,25 @@ class ResultFile {
     std::vector<double> buffer;      // block_rows rows, row-major, sized once
     std::vector<double> last_block;  // the last whole block written, sized once
     hsize_t staging_offset = 0;      // of its row in a staged sample
+    /// The attributes written through the series' id, kept open with the type and number
+    /// of values they were made with: the end of a run overwrites the statistics of every
+    /// series, and looking each up again (exists, open, compare the stored type and shape)
+    /// cost more than the write (docs/performance.md, "Issue #18, tenth round"). Closed all
+    /// together before one of the dataset's attributes is deleted (a type or shape
+    /// changed), then opened again as they are written.
+    struct KeptAttribute {
+      std::string name;
+      hdf5::Handle attribute;
+      hid_t type = -1;
+      hsize_t values = 0;
+    };
+    std::vector<KeptAttribute> kept_attributes;
   };
+  /// Writes attribute `name` of a series: straight into the attribute it keeps open when
+  /// made with `type` and `values` values, else as write_attribute() (then kept). A
+  /// single value is a scalar attribute when `scalar_when_single`.
+  void write_series_attribute(Series& series, const std::string& name, hid_t type, hsize_t values,
+                              bool scalar_when_single, const void* data);
   /// The staged samples' rows into the series' blocks, each series' rows one sequential
   /// run; the row being built (a flush between its appends) moves to the first place.
   void move_staged_rows_to_blocks();
@@ -166,12 +186,17 @@ class ResultFile {
   /// Writes attribute `name` of `object` (an open group or dataset), overwriting it in
   /// place when it exists with the same type and shape (no allocation), else creating it.
   /// It and the three below call HDF5 at once: their callers call ready_to_write() first.
-  void write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data);
+  /// Returns the attribute, open. `open_attributes`: the object's kept attributes, closed
+  /// before an attribute of it is deleted.
+  hdf5::Handle write_attribute(hid_t object, const std::string& name, hid_t type, hid_t space, const void* data,
+                               std::vector<Series::KeptAttribute>* open_attributes = nullptr);
   /// The typed writes behind set_attribute and set_record_attribute, on an open object.
   void write_text_attribute(hid_t object, const std::string& name, const std::string& value);
   void write_doubles(hid_t object, const std::string& name, const std::vector<double>& values);
   void write_records(hid_t object, const std::string& name, const std::vector<std::string>& fields,
                      const std::vector<double>& values);
+  /// The compound type of set_record_attribute for these field names (made on first use).
+  hid_t record_type(const std::vector<std::string>& fields);
   /// Every series at least `rows` long (extended_since_commit_ when one grows).
   void extend_series(hsize_t rows);
   /// Rows [first, first + rows) of a series from `rows_data` (the dataset is long enough).

@@ -8,13 +8,16 @@
 #include <string>
 
 #include "hydro/waves/wave_train.hpp"
+#include "kernel/elements/evaluation_key.hpp"
 #include "kernel/elements/force_element.hpp"
 
 namespace heavesim {
 
 /// Records the load an element puts on its body, and passes everything else through.
-/// outputs() evaluates the wrapped element's apply() into a scratch AppliedForces sized
-/// at construction: no allocation (not thread-safe: the scratch is mutable state).
+/// apply() keeps the wrapped element's own load on the body, and outputs() reads it back
+/// for the same evaluation (kernel/elements/evaluation_key.hpp); asked at another point,
+/// outputs() applies the element again into a scratch AppliedForces sized at
+/// construction. No allocation after the first call (not thread-safe: mutable state).
 class RecordedLoad : public ForceElement {
  public:
   RecordedLoad(std::unique_ptr<ForceElement> element, const Model& model, int link,
@@ -36,7 +39,21 @@ class RecordedLoad : public ForceElement {
   void initial_state(Eigen::Ref<VectorX> z) const override { element_->initial_state(z); }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override {
-    element_->apply(t, model, data, z, forces);
+    // The element adds its load to a zero on the body, then that goes onto what was there:
+    // the same sum, bit for bit, for an element that adds one load to the body.
+    Force& on_body = forces.external_force_world[link_];
+    const Force before = on_body;
+    on_body = Force::Zero();
+    applied_point_.keep(data, t, z, [&] {
+      try {
+        element_->apply(t, model, data, z, forces);
+      } catch (...) {
+        on_body = before;  // the loads before this element stand
+        throw;
+      }
+      applied_ = on_body;
+    });
+    on_body = before + applied_;
   }
   void state_derivative(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                         Eigen::Ref<VectorX> zdot) const override {
@@ -55,9 +72,12 @@ class RecordedLoad : public ForceElement {
         data.stages.time != t)
       throw std::logic_error("recorded load '" + name() + "': the position and velocity stages are not those of t");
     if (own_ > 0) element_->outputs(t, model, data, z, values.first(static_cast<std::size_t>(own_)));
-    scratch_.clear();
-    element_->apply(t, model, data, z, scratch_);
-    const Force& f = scratch_.external_force_world[link_];
+    const bool applied_here = applied_point_.matches(data, t, z);
+    if (!applied_here) {
+      scratch_.clear();
+      element_->apply(t, model, data, z, scratch_);
+    }
+    const Force& f = applied_here ? applied_ : scratch_.external_force_world[link_];
     // The kernel's spatial force is about the world origin: M_ref = M_0 - p x F.
     const Vector3 p = (data.X_world_link[link_] * model.links[link_].X_link_body).translation();
     const Vector3 force = f.linear(), moment = f.angular() - p.cross(force);
@@ -70,6 +90,8 @@ class RecordedLoad : public ForceElement {
   int link_;
   std::shared_ptr<const hydro::WaveTrain> waves_;  // the scene's sea, shared by its elements
   mutable AppliedForces scratch_;
+  mutable EvaluationKey applied_point_;  // where apply() last ran
+  mutable Force applied_ = Force::Zero();  // the element's own load on the body there, about the world origin
   std::vector<ElementChannel> channels_;
   int own_ = 0;
 };

@@ -3,9 +3,11 @@
 // channels, and one function that evaluates everything at a state -- the force along
 // the stroke, the signals, and (when asked) the rates of the internal states. apply(),
 // state_derivative() and outputs() are that one evaluation seen three ways, so they
-// can never disagree.
+// can never disagree; they share it (evaluated()): a residual's apply() and
+// state_derivative(), and a recorded sample's outputs and summary, evaluate once.
 #include "control/element_channels.hpp"
 #include "control/stroke/stroke_axis.hpp"
+#include "kernel/elements/evaluation_key.hpp"
 
 namespace heavesim {
 
@@ -18,15 +20,28 @@ class StrokeElement : public ForceElement {
   const std::vector<ElementChannel>& channels() const override { return table_.channels(); }
   void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override {
-    apply_stroke_force(axis_, model, data, evaluate(t, model, data, z, nullptr).force, forces);
+    apply_stroke_force(axis_, model, data, evaluated(t, model, data, z).force, forces);
   }
   void state_derivative(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                         Eigen::Ref<VectorX> zdot) const override {
-    if (z.size() > 0) evaluate(t, model, data, z, zdot.data());
+    if (z.size() == 0) return;
+    evaluated(t, model, data, z);
+    zdot = last_rates_;
   }
   void outputs(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
                std::span<double> values) const override {
-    table_.fill(evaluate(t, model, data, z, nullptr), values);
+    table_.fill(evaluated(t, model, data, z), values);
+  }
+  /// evaluate() with its rates, once per point: the last one is kept and handed back while
+  /// the stages' evaluation, t and z are the same (kernel/elements/evaluation_key.hpp).
+  /// The reference stays valid until the next call. Allocates on the first call only.
+  const State& evaluated(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z) const {
+    if (!last_point_.matches(data, t, z))
+      last_point_.keep(data, t, z, [&] {
+        last_rates_.resize(z.size());
+        last_ = evaluate(t, model, data, z, z.size() > 0 ? last_rates_.data() : nullptr);
+      });
+    return last_;
   }
   /// Everything but history: a compensator's evaluation is a function of (t, q, v, z) alone.
   ElementDependencies dependencies() const override { return {true, true, true, true, false}; }
@@ -46,6 +61,11 @@ class StrokeElement : public ForceElement {
   StrokeAxis axis_;
   Parameters parameters_;
   ChannelTable<State> table_;
+
+ private:
+  mutable EvaluationKey last_point_;
+  mutable State last_{};
+  mutable VectorX last_rates_;  // dz/dt at last_point_
 };
 
 }  // namespace heavesim

@@ -12,6 +12,7 @@
 // Units: K in N/m, N, N m/rad blocks; B_lin in N s/m, N s, N m s/rad; b_quad in
 // N s^2/m^2 (translations) and N m s^2/rad^2 (rotations). No allocation in apply().
 #include "hydro/elements/body_motion.hpp"
+#include "kernel/elements/evaluation_key.hpp"
 
 namespace heavesim::hydro {
 
@@ -37,10 +38,11 @@ class LinearRestoring : public ForceElement {
       : name_(std::move(name)), link_(link), stiffness_(stiffness), constant_load_(constant_load),
         reference_(X_world_reference) {}
   const std::string& name() const override { return name_; }
-  void apply(double, const Model& model, const Data& data, Eigen::Ref<const VectorX>,
+  void apply(double t, const Model& model, const Data& data, Eigen::Ref<const VectorX> z,
              AppliedForces& forces) const override {
     const BodyMotion m = body_motion(model, data, link_);
-    const Vector6 load = constant_load_ - stiffness_ * displacement(m.X_world_body, reference_);
+    last_displacement_.keep(data, t, z, [&] { displacement_ = displacement(m.X_world_body, reference_); });
+    const Vector6 load = constant_load_ - stiffness_ * displacement_;
     add_load(forces, link_, m.X_world_body.translation(), load);
   }
   /// The body's pose only.
@@ -51,8 +53,12 @@ class LinearRestoring : public ForceElement {
   /// only sym(K): the skew part of a K from which WAMIT's gravitational terms were taken
   /// out (C46, C56) does work that no potential holds, so the energy channel does not
   /// close by that much.
+  /// At the pose apply() saw in this evaluation (a recorded sample's energy), its xi is
+  /// read back (kernel/elements/evaluation_key.hpp); the pose depends on no time or state.
   double potential_energy(const Model& model, const Data& data, Eigen::Ref<const VectorX>) const override {
-    const Vector6 xi = displacement(body_motion(model, data, link_).X_world_body, reference_);
+    const Vector6 xi = last_displacement_.same_stages(data)
+                           ? displacement_
+                           : displacement(body_motion(model, data, link_).X_world_body, reference_);
     return 0.5 * xi.dot(stiffness_ * xi) - constant_load_.dot(xi);
   }
 
@@ -62,6 +68,8 @@ class LinearRestoring : public ForceElement {
   Matrix6 stiffness_;
   Vector6 constant_load_;
   Transform reference_;
+  mutable EvaluationKey last_displacement_;  // where apply() computed displacement_
+  mutable Vector6 displacement_ = Vector6::Zero();
 };
 
 class BodyDamping : public ForceElement {

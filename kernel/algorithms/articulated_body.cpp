@@ -1,8 +1,21 @@
 #include "kernel/algorithms/articulated_body.hpp"
 
+#include <limits>
+
+#include <Eigen/Cholesky>
+
 #include "kernel/math/positive_definite_inverse.hpp"
 
 namespace heavesim {
+namespace {
+
+/// u - U^T a of a free joint (aba_u, aba_U of the backward pass) at its parent's
+/// acceleration plus the joint's bias, a: D qdd equals it (Featherstone 2008, sec. 7.3).
+Vector6 free_joint_residual(const Data& data, int v_index, const Motion& a) {
+  return data.aba_u.segment<6>(v_index) - data.aba_U.middleCols<6>(v_index).transpose() * a.vector();
+}
+
+}  // namespace
 
 const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data, const VectorX& tau,
                                                  ExternalForces external_forces_world) {
@@ -39,11 +52,21 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
       auto U = data.aba_U.middleCols<6>(joint.v_index);
       U.noalias() = IA * S;
       const Matrix6 D = S.transpose() * U;
-      const Matrix6 D_inverse = positive_definite_inverse<6>(D);
-      data.aba_D_inverse[i] = D_inverse;
       auto u = data.aba_u.segment<6>(joint.v_index);
       u.noalias() = tau.segment<6>(joint.v_index) - S.transpose() * pA.vector();
-      if (joint.parent > 0) {
+      if (joint.parent == 0) {
+        // A floating base: its parent's acceleration (the world's) is known already, so
+        // qdd = D^-1 (u - U^T (a_0 + c)) now, by a solve with D's Cholesky factor; the
+        // forward pass takes it as it is. No parent needs U D^-1: forming D^-1 (most of
+        // this joint's cost in a recorded sample's evaluation) is skipped.
+        const Vector6 residual = free_joint_residual(data, joint.v_index, data.acceleration_world[0] + c);
+        const Eigen::LLT<Matrix6> cholesky(D);
+        data.qdd.segment<6>(joint.v_index) = cholesky.info() == Eigen::Success
+                                                 ? Vector6(cholesky.solve(residual))
+                                                 : Vector6::Constant(std::numeric_limits<double>::quiet_NaN());
+      } else {
+        const Matrix6 D_inverse = positive_definite_inverse<6>(D);
+        data.aba_D_inverse[i] = D_inverse;
         const Matrix6 UD = U * D_inverse;
         const Matrix6 Ia = IA - UD * U.transpose();
         data.articulated_bias_world[joint.parent] += pA + Ia * c + Force(UD * u);
@@ -79,11 +102,10 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
       data.qdd[joint.v_index] = qdd;
       a += Motion(data.motion_subspace_world.col(joint.v_index) * qdd);
     } else if (joint.nv == 6) {
-      const Vector6 residual =
-          data.aba_u.segment<6>(joint.v_index) - data.aba_U.middleCols<6>(joint.v_index).transpose() * a.vector();
-      const Vector6 qdd = Matrix6(data.aba_D_inverse[i]) * residual;
-      data.qdd.segment<6>(joint.v_index) = qdd;
-      a += Motion(data.motion_subspace_world.middleCols<6>(joint.v_index) * qdd);
+      if (joint.parent > 0)  // a floating base's qdd came from the backward pass
+        data.qdd.segment<6>(joint.v_index) =
+            Matrix6(data.aba_D_inverse[i]) * free_joint_residual(data, joint.v_index, a);
+      a += Motion(data.motion_subspace_world.middleCols<6>(joint.v_index) * data.qdd.segment<6>(joint.v_index));
     } else if (joint.nv > 1) {
       const SmallVector residual = data.aba_u.segment(joint.v_index, joint.nv) -
                                    data.aba_U.middleCols(joint.v_index, joint.nv).transpose() * a.vector();

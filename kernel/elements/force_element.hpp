@@ -54,6 +54,9 @@ struct ElementDependencies {
 /// A force element may own internal states z with dz/dt = g(t, q, v, z)
 /// (radiation memory, gas temperature, chamber pressures, controller integrators).
 /// apply() and state_derivative() see the position and velocity stages in Data.
+/// Its const methods may keep what they computed (a convolution's history, the last
+/// evaluation: evaluation_key.hpp): one element is called by one thread at a time, and
+/// a second thread works on a second build of the scene.
 class ForceElement {
  public:
   virtual ~ForceElement() = default;

@@ -4,7 +4,9 @@
 // (Golub and Van Loan, Matrix Computations, 4th ed., sec. 4.2 and 3.1). Eigen's
 // LLT::solve(Identity) gives the same matrix, but a matrix right-hand side goes through its
 // blocked triangular solver (trsm) even at fixed size: 8 % of a free floating platform's
-// 3-hour run, in the free joint's articulated-body step. Here every loop has fixed bounds.
+// 3-hour run, in the free joint's articulated-body step (which, for a free joint on the
+// world, now solves with the Cholesky factor instead: no inverse needed there). ABA still
+// needs D^-1 for a free joint below another body. Here every loop has fixed bounds.
 // A matrix that is not positive definite (numerically) gives NaN in every entry: Eigen's
 // solve would return a finite matrix built on the factorization's partial result, and the
 // caller's check for non-finite accelerations would not see it.

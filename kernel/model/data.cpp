@@ -1,5 +1,6 @@
 #include "kernel/model/data.hpp"
 
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -59,6 +60,19 @@ Data::Data(const Model& model)
   aba_D_inverse.resize(n);
   for (int i = 1; i < n; ++i) aba_D_inverse[i] = SmallMatrix::Zero(model.joints[i].nv, model.joints[i].nv);
   aba_u = VectorX::Zero(model.nv);
+}
+
+long StageMarker::fresh_evaluation_number() {
+  // Ranges of 2^20 numbers: a thread goes back to the shared counter once per ~10^6
+  // evaluations. A long does not run out (2^63 numbers).
+  constexpr long range = 1L << 20;
+  static std::atomic<long> next_range{0};
+  thread_local long next = 0, end = 0;
+  if (next == end) {
+    next = next_range.fetch_add(range, std::memory_order_relaxed);
+    end = next + range;
+  }
+  return ++next;  // 1 .. range in the first range: never 0
 }
 
 void require_stages(const Data& data, unsigned required, double t, long evaluation) {

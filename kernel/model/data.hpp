@@ -33,17 +33,25 @@ using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
 struct StageMarker {
   enum Stage : unsigned { positions = 1u, velocities = 2u, accelerations = 4u, reactions = 8u, mass_factor = 16u };
   unsigned current = 0;  // bits of the stages computed in this evaluation
-  long evaluation = 0;   // advanced by every position or velocity stage
+  /// Renewed by every position or velocity stage, and unique in the process (0: no stage
+  /// yet): two Data hold the same number only when one is a copy of the other's
+  /// evaluation, so an element may key what it computed from one evaluation on this
+  /// number, whichever Data it is handed next (kernel/elements/evaluation_key.hpp).
+  long evaluation = 0;
   double time = std::numeric_limits<double>::quiet_NaN();  // s, of this evaluation (NaN: not recorded)
+
+  /// A number no StageMarker of this process has held: each thread takes them from a
+  /// range of its own (no shared counter touched per evaluation).
+  static long fresh_evaluation_number();
 
   void begin_evaluation() {
     current = positions;
-    ++evaluation;
+    evaluation = fresh_evaluation_number();
     time = std::numeric_limits<double>::quiet_NaN();
   }
   void velocities_computed() {
     current = (current & (positions | mass_factor)) | velocities;
-    ++evaluation;
+    evaluation = fresh_evaluation_number();
     time = std::numeric_limits<double>::quiet_NaN();
   }
   void accelerations_computed() { current = (current & (positions | velocities | mass_factor)) | accelerations; }
@@ -55,7 +63,7 @@ struct StageMarker {
   /// position and velocity stages (and M's factor) stand; nothing derived from forces does.
   void same_state_again() {
     current &= positions | velocities | mass_factor;
-    ++evaluation;
+    evaluation = fresh_evaluation_number();
     time = std::numeric_limits<double>::quiet_NaN();
   }
 };
@@ -135,7 +143,7 @@ struct Data {
   AlignedVector<Matrix6> articulated_inertia_world;
   AlignedVector<Force> articulated_bias_world;
   Matrix6X aba_U;                                 // 6 x nv: U_i = I^A_i S_i
-  std::vector<SmallMatrix> aba_D_inverse;         // per link, nv_i x nv_i
+  std::vector<SmallMatrix> aba_D_inverse;         // per link, nv_i x nv_i (not formed for a floating base: ABA solves for its qdd)
   VectorX aba_u;                                  // nv: u_i = tau_i - S_i^T p^A_i
 };
 

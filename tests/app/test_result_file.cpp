@@ -220,7 +220,11 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
     file.set_record_attribute(id, "other", {"a", "b"}, {nan, nan});
     file.flush();  // published: headers no longer grow
     file.set_record_attribute(id, "statistics", {"mean", "std"}, {1.0, 2.0, 3.0, 4.0});
+    // Other fields: deleted and made again, the series' other attributes closed first.
     file.set_record_attribute(id, "other", {"a", "c"}, {5.0, 6.0});
+    // Opened again when written, then written through the handle kept open.
+    file.set_record_attribute(id, "statistics", {"mean", "std"}, {7.0, 8.0, 9.0, 10.0});
+    file.set_record_attribute(id, "statistics", {"mean", "std"}, {11.0, 12.0, 13.0, 14.0});
     file.close();
   }
   const auto read_records = [&](const std::string& name, std::vector<std::string>& fields) {
@@ -239,7 +243,7 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
     return values;
   };
   std::vector<std::string> fields;
-  EXPECT_EQ(read_records("statistics", fields), (std::vector<double>{1.0, 2.0, 3.0, 4.0}));
+  EXPECT_EQ(read_records("statistics", fields), (std::vector<double>{11.0, 12.0, 13.0, 14.0}));
   EXPECT_EQ(fields, (std::vector<std::string>{"mean", "std"}));
   EXPECT_EQ(read_records("other", fields), (std::vector<double>{5.0, 6.0}));
   EXPECT_EQ(fields, (std::vector<std::string>{"a", "c"}));

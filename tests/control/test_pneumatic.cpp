@@ -104,6 +104,54 @@ TEST(Pneumatic, GasEnergyClosesTheEnergyBalanceOfAnUndampedRun) {
   EXPECT_GT(mechanical_swing, 0.5 * kinetic_max);  // the gas term is what closes the balance
 }
 
+TEST(Pneumatic, OneEvaluationServesApplyRatesAndOutputsAndFollowsEveryChange) {
+  // A stroke element keeps its last evaluation (kernel/elements/evaluation_key.hpp):
+  // apply(), state_derivative() and outputs() must each give, at their own point, what a
+  // compensator that never evaluated before gives there -- after new element states on
+  // the same stages, new stages, and another Data -- and the rates what evaluate() gives.
+  Placed placed;
+  PneumaticParameters p;
+  p.cooling = GasCooling{};  // the gas temperature ratio theta = T / T0 is an element state
+  const PneumaticCompensator compensator("pn", placed.axis(), p);
+  ASSERT_EQ(compensator.state_size(), 1);
+  const Model& model = *placed.model;
+  auto at_point = [&model](const PneumaticCompensator& element, double t, const Data& data, const VectorX& z) {
+    AppliedForces forces(model);
+    VectorX zdot(1);
+    std::vector<double> values(element.channels().size());
+    element.apply(t, model, data, z, forces);
+    element.state_derivative(t, model, data, z, zdot);
+    element.outputs(t, model, data, z, values);
+    values.push_back(forces.joint_force[0]);
+    values.push_back(zdot[0]);
+    return values;
+  };
+  auto expect_fresh_values = [&](double t, const Data& data, const VectorX& z) {
+    const PneumaticCompensator fresh("pn", placed.axis(), p);
+    const std::vector<double> values = at_point(compensator, t, data, z);
+    EXPECT_EQ(values, at_point(fresh, t, data, z)) << "t = " << t << ", theta = " << z[0];
+    double rate = 0.0;
+    const PneumaticState state = fresh.evaluate(t, model, data, z, &rate);
+    EXPECT_EQ(values.back(), rate);
+    EXPECT_EQ(values[values.size() - 2], state.force);  // on the joint's coordinate, along the stroke
+    return values;
+  };
+  placed.at(0.3, 0.1);
+  const std::vector<double> first = expect_fresh_values(0.0, placed.data, VectorX::Constant(1, 1.0));
+  // The same stages and time, a warmer gas: the pressure must follow.
+  const std::vector<double> warmer = expect_fresh_values(0.0, placed.data, VectorX::Constant(1, 1.05));
+  EXPECT_NE(first, warmer);
+  placed.at(-0.5, -0.2);
+  const std::vector<double> moved = expect_fresh_values(0.0, placed.data, VectorX::Constant(1, 1.05));
+  EXPECT_NE(moved, warmer);
+  // Another Data, then back: each its own stages.
+  Data other(model);
+  update_positions(model, other, VectorX::Constant(1, 1.2));
+  update_velocities(model, other, VectorX::Constant(1, 1.2), VectorX::Constant(1, 0.4));
+  EXPECT_NE(expect_fresh_values(0.0, other, VectorX::Constant(1, 1.05)), moved);
+  EXPECT_EQ(expect_fresh_values(0.0, placed.data, VectorX::Constant(1, 1.05)), moved);
+}
+
 TEST(Pneumatic, PipingFrictionAndEndStops) {
   Placed placed;
   PneumaticParameters p;

@@ -11,6 +11,7 @@
 #include "hydro/elements/radiation_memory.hpp"
 #include "hydro/elements/wave_excitation.hpp"
 #include "hydro/waves/wave_spectrum.hpp"
+#include "kernel/algorithms/kinematics.hpp"
 #include "kernel/system/multibody_system.hpp"
 #include "samples/floating_bodies.hpp"
 
@@ -71,8 +72,9 @@ TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
 
 TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
   // The application's recording wrapper (app/scene/recorded_load.hpp) around a linear
-  // restoring and a wave-excitation element: outputs() runs the wrapped apply() into its
-  // own scratch forces.
+  // restoring and a wave-excitation element: outputs() reads the load apply() kept at the
+  // system's evaluation, and at another (a Data it never applied on) runs the wrapped
+  // apply() into its own scratch forces.
   auto model = floating_hull(std::nullopt);
   const int link = model->link_index("hull");
   MultibodySystem system(model);
@@ -98,10 +100,21 @@ TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
   system.state_derivative(3.0, y, ydot);
   std::array<double, 6> restoring_values;
   std::array<double, 9> wave_values;
+  Data other = system.data();
+  VectorX q_other = q;
+  q_other[0] += 0.01;  // moved 1 cm in x
   Eigen::internal::set_is_malloc_allowed(false);
   EXPECT_NO_THROW(system.state_derivative(5.0, y, ydot));
   EXPECT_NO_THROW(restoring_element.outputs(5.0, *model, system.data(), VectorX(), restoring_values));
   EXPECT_NO_THROW(wave_element.outputs(5.0, *model, system.data(), VectorX(), wave_values));
+  EXPECT_NO_THROW({
+    update_positions(*model, other, q_other);
+    update_velocities(*model, other, q_other, v);
+    other.stages.time = 5.0;
+    std::array<double, 6> applied_again;
+    restoring_element.outputs(5.0, *model, other, VectorX(), applied_again);
+    wave_element.outputs(5.0, *model, other, VectorX(), wave_values);
+  });
   Eigen::internal::set_is_malloc_allowed(true);
   EXPECT_NEAR(restoring_values[2], 1e4 * 0.5, 1e-6);  // F_z = -K xi_z, xi_z = -0.5 m
 }

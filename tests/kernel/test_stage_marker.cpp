@@ -3,7 +3,10 @@
 // caught by require_stages.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "kernel/algorithms/inverse_dynamics.hpp"
 #include "kernel/algorithms/kinematics.hpp"
@@ -81,6 +84,38 @@ TEST(StageMarker, VelocitiesNeedTheirPositions) {
   EXPECT_THROW(update_velocities(model, data, VectorX::Zero(1), VectorX::Zero(1)), std::logic_error);
   update_positions(model, data, VectorX::Zero(1));
   EXPECT_NO_THROW(update_velocities(model, data, VectorX::Zero(1), VectorX::Zero(1)));
+}
+
+TEST(StageMarker, EvaluationNumbersAreUniqueAcrossDataAndThreads) {
+  // An element keeps what it computed under the evaluation number alone
+  // (kernel/elements/evaluation_key.hpp): two Data, or two threads, must never hold the
+  // same number for different stages; a copy holds its original's (the same stages).
+  const auto model_pointer = samples::vertical_slider(10.0);
+  const Model& model = *model_pointer;
+  Data first(model), second(model);
+  EXPECT_EQ(first.stages.evaluation, 0);  // no stage yet
+  update_positions(model, first, VectorX::Constant(1, 0.1));
+  update_positions(model, second, VectorX::Constant(1, 0.2));
+  EXPECT_NE(first.stages.evaluation, second.stages.evaluation);
+  EXPECT_NE(first.stages.evaluation, 0);
+  const Data copy = first;
+  EXPECT_EQ(copy.stages.evaluation, first.stages.evaluation);
+  std::vector<long> numbers[2];
+  auto evaluate_many = [&model](std::vector<long>& numbers) {
+    Data data(model);
+    for (int k = 0; k < 2000; ++k) {
+      update_positions(model, data, VectorX::Constant(1, 1e-3 * k));
+      numbers.push_back(data.stages.evaluation);
+      update_velocities(model, data, VectorX::Constant(1, 1e-3 * k), VectorX::Zero(1));
+      numbers.push_back(data.stages.evaluation);
+    }
+  };
+  std::thread other(evaluate_many, std::ref(numbers[1]));
+  evaluate_many(numbers[0]);
+  other.join();
+  std::set<long> seen{first.stages.evaluation, second.stages.evaluation};
+  for (const std::vector<long>& list : numbers) seen.insert(list.begin(), list.end());
+  EXPECT_EQ(seen.size(), 2u + numbers[0].size() + numbers[1].size());
 }
 
 }  // namespace
