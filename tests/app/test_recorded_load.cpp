@@ -126,21 +126,21 @@ TEST(RecordedLoad, PassesTheWrappedLoadOnBitForBit) {
 /// A load (1, 2, 3) N at the body origin that counts its apply() calls, or throws.
 class CountingLoad : public ForceElement {
  public:
-  CountingLoad(int link, bool throws) : link_(link), throws_(throws) {}
+  CountingLoad(int link, bool throws) : throws(throws), link_(link) {}
   const std::string& name() const override { return name_; }
   void apply(double, const Model& model, const Data& data, Eigen::Ref<const VectorX>,
              AppliedForces& forces) const override {
     ++applies;
     const Vector3 origin = (data.X_world_link[link_] * model.links[link_].X_link_body).translation();
     forces.add_force_at_point(link_, origin, Vector3(1.0, 2.0, 3.0));
-    if (throws_) throw std::runtime_error("counting load: asked to fail");
+    if (throws) throw std::runtime_error("counting load: asked to fail");
   }
   mutable int applies = 0;
+  bool throws;
 
  private:
   std::string name_ = "counting";
   int link_;
-  bool throws_;
 };
 
 TEST(RecordedLoad, ReadsBackTheLoadOfItsEvaluationWithoutApplyingAgain) {
@@ -169,17 +169,27 @@ TEST(RecordedLoad, ReadsBackTheLoadOfItsEvaluationWithoutApplyingAgain) {
 }
 
 TEST(RecordedLoad, AFailingElementLeavesTheLoadsBeforeItStanding) {
+  // ... and keeps nothing of the failed point: outputs() there applies the element again.
   const RestoredHull hull;
-  const RecordedLoad recorded(std::make_unique<CountingLoad>(hull.link, true), *hull.model, hull.link, nullptr);
+  auto counting = std::make_unique<CountingLoad>(hull.link, true);
+  CountingLoad& load = *counting;
+  const RecordedLoad recorded(std::move(counting), *hull.model, hull.link, nullptr);
   Data data(*hull.model);
   const VectorX q = hull.configuration(0.0, 0.0, 0.0, 0.0);
   update_positions(*hull.model, data, q);
   update_velocities(*hull.model, data, q, VectorX::Zero(6));
+  data.stages.time = 0.0;
   AppliedForces forces(*hull.model);
   const Force before(Vector3(4.0, 5.0, 6.0), Vector3(7.0, 8.0, 9.0));
   forces.external_force_world[hull.link] = before;
   EXPECT_THROW(recorded.apply(0.0, *hull.model, data, VectorX(), forces), std::runtime_error);
   EXPECT_EQ(forces.external_force_world[hull.link].vector(), before.vector());
+  ASSERT_EQ(load.applies, 1);
+  load.throws = false;
+  std::vector<double> values(6);
+  recorded.outputs(0.0, *hull.model, data, VectorX(), values);
+  EXPECT_EQ(load.applies, 2);
+  EXPECT_EQ(values[2], 3.0);
 }
 
 }  // namespace

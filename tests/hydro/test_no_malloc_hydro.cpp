@@ -100,6 +100,7 @@ TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
   system.state_derivative(3.0, y, ydot);
   std::array<double, 6> restoring_values;
   std::array<double, 9> wave_values;
+  std::array<double, 6> applied_again;
   Data other = system.data();
   VectorX q_other = q;
   q_other[0] += 0.01;  // moved 1 cm in x
@@ -111,7 +112,6 @@ TEST(NoMallocHydro, RecordedLoadOutputsDoNotAllocate) {
     update_positions(*model, other, q_other);
     update_velocities(*model, other, q_other, v);
     other.stages.time = 5.0;
-    std::array<double, 6> applied_again;
     restoring_element.outputs(5.0, *model, other, VectorX(), applied_again);
     wave_element.outputs(5.0, *model, other, VectorX(), wave_values);
   });
