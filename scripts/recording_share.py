@@ -60,21 +60,38 @@ def stacks(perf_script_text):
         yield header, frames
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def case_parser(description):
+    """The command line both share scripts take: CASE.yaml, --binary, --set k=v ..."""
+    parser = argparse.ArgumentParser(description=description, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("case")
     parser.add_argument("--binary", default="build/heavesim")
-    parser.add_argument("--runs", type=int, default=6)
     parser.add_argument("--set", action="append", default=[], dest="overrides")
+    return parser
+
+
+def run_line(arguments, result):
+    """The `heavesim run` command line of the case, writing `result`."""
+    run = [arguments.binary, "run", arguments.case, "-o", result, "-q"]
+    for override in arguments.overrides:
+        run += ["--set", override]
+    return run
+
+
+def print_shares(shares, total):
+    """One line per (name, count): its percentage of `total`."""
+    for name, count in shares:
+        print(f"  {100.0 * count / total:5.1f} %  {name}")
+
+
+def main():
+    parser = case_parser(__doc__)
+    parser.add_argument("--runs", type=int, default=6)
     arguments = parser.parse_args()
     if shutil.which("perf") is None:
         sys.exit("recording_share: needs perf (apt-get install linux-perf)")
     with tempfile.TemporaryDirectory() as directory:
         data, result = os.path.join(directory, "perf.data"), os.path.join(directory, "run.h5")
-        run = [arguments.binary, "run", arguments.case, "-o", result, "-q"]
-        for override in arguments.overrides:
-            run += ["--set", override]
-        loop = " && ".join([" ".join(run)] * arguments.runs)
+        loop = " && ".join([" ".join(run_line(arguments, result))] * arguments.runs)
         subprocess.run(["perf", "record", "-q", "-F", "10000", "--call-graph", "dwarf,16384", "-o", data, "--",
                         "sh", "-c", loop], check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         text = subprocess.run(["perf", "script", "-i", data, "-F", "comm,tid,ip,sym"], check=True,
@@ -96,14 +113,11 @@ def main():
     if total == 0:
         sys.exit("recording_share: no sample of the main thread was unwound")
     print(f"{total} samples of the main thread over {arguments.runs} runs of {arguments.case}")
-    for name in ("recording", "integration", "set-up"):
-        print(f"  {100.0 * shares[name] / total:5.1f} %  {name}")
+    print_shares([(name, shares[name]) for name in ("recording", "integration", "set-up")], total)
     print("  of which, in the recording:")
-    for name, _ in DETAILS:
-        print(f"  {100.0 * details[name] / total:5.1f} %  {name}")
+    print_shares([(name, details[name]) for name, _ in DETAILS], total)
     print("  beside the main thread, CPU on the helper threads, in % of the main thread's:")
-    for name, _ in HELPERS:
-        print(f"  {100.0 * helpers[name] / total:5.1f} %  {name}")
+    print_shares([(name, helpers[name]) for name, _ in HELPERS], total)
 
 
 if __name__ == "__main__":

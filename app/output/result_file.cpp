@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <numeric>
 #include <stdexcept>
 
 #include "io/hdf5/hdf5_error.hpp"
@@ -71,6 +72,20 @@ Handle attribute_space(hsize_t values, bool scalar_when_single) {
 /// Records of a compound attribute: one per fields.size() values.
 hsize_t record_count(const std::vector<std::string>& fields, const std::vector<double>& values) {
   return fields.empty() ? 0 : values.size() / fields.size();
+}
+
+/// `rows` rows of `Width` values, `from_stride` values apart, into consecutive rows of
+/// `to`. The width known at compile time makes each row a few register moves: a
+/// std::copy_n of a run-time width is a memmove call per row, and the drilling run's
+/// staged rows (101 series of 1 to 6 values, 12001 samples) made 1.2 million of them,
+/// 15 % of the samples' thread (docs/performance.md, "Issue #18, eleventh round").
+template <int Width>
+void copy_strided_rows(const double* from, hsize_t from_stride, double* to, hsize_t rows) {
+  for (hsize_t row = 0; row < rows; ++row) {
+    const double* source = from + row * from_stride;
+    double* target = to + row * Width;
+    for (int value = 0; value < Width; ++value) target[value] = source[value];
+  }
 }
 
 // No chunk cache: a write goes to disk in H5Dwrite, where its failure is seen, and a
@@ -201,9 +216,19 @@ hid_t ResultFile::record_type(const std::vector<std::string>& fields) {
   auto known = std::find_if(record_types_.begin(), record_types_.end(),
                             [&fields](const auto& entry) { return entry.first == fields; });
   if (known == record_types_.end()) {
+    // Members in name order, each at its field's place in the values (f * 8 bytes): HDF5
+    // 1.10 compares two compound types (H5Awrite's conversion path, H5Acreate2's copy) after
+    // bubble-sorting both member lists by name, O(n^2) strcmp for the ~40 statistics in
+    // the order of their meaning and one pass when already sorted. The drilling run's
+    // 101 statistics attributes, made with their placeholders and overwritten at the end,
+    // spent ~7 % of the main thread there (docs/performance.md, "Issue #18, eleventh round").
+    std::vector<std::size_t> by_name(fields.size());
+    std::iota(by_name.begin(), by_name.end(), std::size_t{0});
+    std::sort(by_name.begin(), by_name.end(),
+              [&fields](std::size_t a, std::size_t b) { return fields[a] < fields[b]; });
     Handle type(H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double)));
     check(type.valid(), "cannot write result file");
-    for (std::size_t f = 0; f < fields.size(); ++f)
+    for (const std::size_t f : by_name)
       check(H5Tinsert(type.get(), fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE) >= 0,
             "cannot write result file");
     record_types_.emplace_back(fields, std::move(type));
@@ -283,8 +308,14 @@ void ResultFile::write_text(const std::string& dataset_path, const std::string& 
   const Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), text_type_.get(), space.get(), links_.get(),
                                   H5P_DEFAULT, H5P_DEFAULT));
   check(dataset.valid(), "cannot create dataset " + dataset_path + " in");
+  // One element to convert (a variable-length string: its pointer into the global heap):
+  // a conversion buffer of one page, not HDF5's default of 1 MB, which it allocates with
+  // calloc, ~1.5 ms of page faults in every run's set-up (docs/performance.md, "Issue #18,
+  // eleventh round").
+  const Handle transfer(H5Pcreate(H5P_DATASET_XFER));
+  check(transfer.valid() && H5Pset_buffer(transfer.get(), 4096, nullptr, nullptr) >= 0, "cannot write result file");
   const char* data = text.c_str();
-  check(H5Dwrite(dataset.get(), text_type_.get(), H5S_ALL, H5S_ALL, H5P_DEFAULT, &data) >= 0,
+  check(H5Dwrite(dataset.get(), text_type_.get(), H5S_ALL, H5S_ALL, transfer.get(), &data) >= 0,
         "cannot write result file");
   write_text_attribute(dataset.get(), "description", description);
   write_text_attribute(dataset.get(), "units", "-");
@@ -343,8 +374,16 @@ void ResultFile::move_staged_rows_to_blocks() {
   for (Series& series : series_) {
     const double* from = staging_.data() + series.staging_offset;
     double* to = series.buffer.data() + first * series.width;
-    for (hsize_t s = 0; s < staged_samples_; ++s)
-      std::copy_n(from + s * staging_width_, series.width, to + s * series.width);
+    switch (series.width) {
+      case 1: copy_strided_rows<1>(from, staging_width_, to, staged_samples_); break;
+      case 2: copy_strided_rows<2>(from, staging_width_, to, staged_samples_); break;
+      case 3: copy_strided_rows<3>(from, staging_width_, to, staged_samples_); break;
+      case 4: copy_strided_rows<4>(from, staging_width_, to, staged_samples_); break;
+      case 6: copy_strided_rows<6>(from, staging_width_, to, staged_samples_); break;
+      default:
+        for (hsize_t s = 0; s < staged_samples_; ++s)
+          std::copy_n(from + s * staging_width_, series.width, to + s * series.width);
+    }
   }
   // The row of a sample still being built (a flush between its appends) leads the next
   // run. A full run is moved by end_sample(), between samples: nothing is being built then.

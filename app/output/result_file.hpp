@@ -75,7 +75,8 @@ class ResultFile {
   void set_attribute(const std::string& object_path, const std::string& name, long value);
   void set_attribute(const std::string& object_path, const std::string& name, const std::vector<double>& values);
   /// A compound attribute: one record per row of `values` (row-major, fields.size() numbers a
-  /// row), each a double field per name; h5py reads it as a numpy structured array.
+  /// row), each a double field per name; h5py reads it as a numpy structured array. The
+  /// type lists its fields in name order (each at its place in the row): see record_type.
   void set_record_attribute(const std::string& object_path, const std::string& name,
                             const std::vector<std::string>& fields, const std::vector<double>& values);
   /// The same two on a series (add_series' id), through the dataset it holds open: no

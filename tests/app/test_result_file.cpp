@@ -250,6 +250,41 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
   std::filesystem::remove(output);
 }
 
+// A record's fields are stored in name order, each at its place in the row: the stored
+// members are sorted by name, and a read with a memory type built here in the writer's
+// order (HDF5 matches members by name and offset) puts every value back in its field, so
+// a field stored at its place in name order instead (a wrong offset) fails.
+TEST(ResultFile, RecordFieldsAreStoredInNameOrderAndReadBackByName) {
+  const std::string output = temporary("records_by_name.h5");
+  const std::vector<std::string> fields = {"window_mean", "kurtosis", "mpm_rayleigh", "cycles"};
+  {
+    ResultFile file(output);
+    const int id = file.add_series("/series", 2, "-", "two columns");
+    file.set_record_attribute(id, "statistics", fields, std::vector<double>(8, std::nan("")));
+    file.flush();  // published: overwritten in place below
+    file.set_record_attribute(id, "statistics", fields, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0});
+    file.close();
+  }
+  const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t attribute = H5Aopen_by_name(file, "/series", "statistics", H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t stored = H5Aget_type(attribute);
+  std::vector<std::string> stored_names;
+  for (int m = 0; m < H5Tget_nmembers(stored); ++m) {
+    char* name = H5Tget_member_name(stored, static_cast<unsigned>(m));
+    stored_names.emplace_back(name);
+    H5free_memory(name);
+  }
+  EXPECT_EQ(stored_names, (std::vector<std::string>{"cycles", "kurtosis", "mpm_rayleigh", "window_mean"}));
+  const hid_t memory = H5Tcreate(H5T_COMPOUND, fields.size() * sizeof(double));
+  for (std::size_t f = 0; f < fields.size(); ++f)
+    H5Tinsert(memory, fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE);
+  std::vector<double> values(8, 0.0);
+  EXPECT_GE(H5Aread(attribute, memory, values.data()), 0);
+  EXPECT_EQ(values, (std::vector<double>{1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0}));
+  H5Tclose(memory), H5Tclose(stored), H5Aclose(attribute), H5Fclose(file);
+  std::filesystem::remove(output);
+}
+
 TEST(ResultFile, NumericalFailureExitsWithCodeThreeAndADiagnosis) {
   const std::string output = temporary("unstable.h5");
   const testing::CommandResult result = testing::run_command_line(

@@ -1,0 +1,93 @@
+#!/usr/bin/python3
+"""Where the instructions of one `heavesim run` go: integration, set-up, the process's
+start, and the rest, which is recording (the result file's layout, the samples' evaluation,
+their channels and statistics, the writes, the end of the run).
+
+    /usr/bin/python3 scripts/instruction_share.py [--binary build/heavesim] CASE.yaml [--set k=v ...]
+
+Runs the case once under Valgrind's callgrind (Debian's valgrind; ~50 times slower than a
+plain run) and reads the inclusive instruction counts of named functions on every thread.
+Unlike the CPU samples of scripts/recording_share.py, an instruction count does not depend
+on what else the shared machine runs, so two binaries compare in one call each; it does not
+see cache misses, page faults or time in the kernel (the writes' copies into the page
+cache), which the wall-time ratios of docs/performance.md do.
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from recording_share import case_parser, print_shares, run_line  # noqa: E402
+
+# (part, function names whose inclusive counts add up to it). The integrator's residuals
+# evaluate the system inside advance_to, so they count as integration, as they should.
+PARTS = [
+    ("integration", ("IdaIntegrator::advance_to", "IdaIntegrator::initialize", "ErkIntegrator::advance_to",
+                     "Rk4Integrator::advance_to", "HhtIntegrator::advance_to", "make_integrator")),
+    ("set-up", ("heavesim::load_case", "heavesim::build_scene")),
+]
+DETAILS = [
+    ("recorder constructor (channels, datasets, attributes)", ("Recorder::Recorder",)),
+    ("the helper threads (BackgroundWorker::loop: samples, statistics, writes)", ("BackgroundWorker::loop",)),
+    ("the samples' channels (Recorder::record_evaluation; their evaluation is beside it)",
+     ("Recorder::record_evaluation",)),
+    ("block statistics (Recorder::add_block_statistics, every thread)", ("Recorder::add_block_statistics",)),
+    ("of which Welch spectra (WelchAccumulator::add)", ("WelchAccumulator::add",)),
+    ("block writes (ResultFile::write_rows)", ("ResultFile::write_rows",)),
+    ("end of run (Recorder::finish)", ("Recorder::finish",)),
+]
+
+
+def inclusive_counts(annotated):
+    """{function: inclusive instructions} from `callgrind_annotate --inclusive=yes` text."""
+    counts = {}
+    for line in annotated.splitlines():
+        match = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+\S*?:(.*?)(?: \[.*\])?$", line)
+        if match:
+            name = match.group(2)
+            counts[name] = max(counts.get(name, 0), int(match.group(1).replace(",", "")))
+    return counts
+
+
+def total_of(counts, keys):
+    """Sum over functions naming one of `keys` before their parameter list (a function
+    that calls another of the same part would count twice: the names here do not nest)."""
+    total = 0
+    for key in keys:
+        total += max((value for name, value in counts.items() if key in name.split("(")[0]), default=0)
+    return total
+
+
+def main():
+    arguments = case_parser(__doc__).parse_args()
+    if shutil.which("valgrind") is None:
+        sys.exit("instruction_share: needs valgrind (apt-get install valgrind)")
+    with tempfile.TemporaryDirectory() as directory:
+        profile, result = os.path.join(directory, "callgrind.out"), os.path.join(directory, "run.h5")
+        start = os.path.join(directory, "start.out")
+        for command, output in ((run_line(arguments, result), profile), ([arguments.binary, "--version"], start)):
+            subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={output}"] + command,
+                           check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        totals = []
+        for output in (profile, start):
+            text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", output],
+                                  check=True, capture_output=True, text=True).stdout
+            totals.append(text)
+    counts = inclusive_counts(totals[0])
+    total = counts.get("PROGRAM TOTALS") or int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", totals[0])
+                                                .group(1).replace(",", ""))
+    start_total = int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", totals[1]).group(1).replace(",", ""))
+    shares = {name: total_of(counts, keys) for name, keys in PARTS}
+    shares["process start and exit (heavesim --version)"] = start_total
+    shares["recording (the rest)"] = total - sum(shares.values())
+    print(f"{total:,} instructions in one run of {arguments.case}")
+    print_shares(shares.items(), total)
+    print("  named parts of the recording:")
+    print_shares([(name, total_of(counts, keys)) for name, keys in DETAILS], total)
+
+
+if __name__ == "__main__":
+    main()
