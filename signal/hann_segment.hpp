@@ -2,9 +2,10 @@
 // One segment of Welch's method (Welch 1967, IEEE Trans. Audio Electroacoust. 15(2)):
 // L samples, their mean removed, times the periodic Hann window
 // w_n = (1 - cos(2 pi n / L)) / 2, and their discrete Fourier transform
-// X_k = sum_n x_n w_n e^(-2 pi i k n / L) for k = 0 .. L/2 (Eigen's FFT, half spectrum of
-// a real input). Shared by the power spectrum (welch_spectrum.hpp) and the cross spectrum
-// (cross_spectrum.hpp), so that both see the same window and scaling.
+// X_k = sum_n x_n w_n e^(-2 pi i k n / L) for k = 0 .. L/2 (FFTW's real-to-complex
+// transform, Frigo & Johnson 2005, Proc. IEEE 93(2)). Shared by the power spectrum
+// (welch_spectrum.hpp) and the cross spectrum (cross_spectrum.hpp), so that both see the
+// same window and scaling.
 #include <complex>
 #include <memory>
 #include <vector>

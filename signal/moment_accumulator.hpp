@@ -21,6 +21,12 @@ class MomentAccumulator {
   /// columns[c]: two passes over the block for all columns together (extremes and mean,
   /// then the central sums) instead of six strided passes per column.
   static void add_rows(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows, std::int64_t count);
+  /// The samples of `other` as well (Pébay 2008, eq. 3.1): the moments of the two records
+  /// together, to round-off those of adding all their samples to one accumulator.
+  void merge(const MomentAccumulator& other) {
+    if (other.count_ > 0)
+      merge(other.count_, other.minimum_, other.maximum_, other.mean_, other.m2_, other.m3_, other.m4_);
+  }
 
   std::int64_t count() const { return count_; }
   double mean() const { return count_ > 0 ? mean_ : nan(); }
@@ -34,10 +40,15 @@ class MomentAccumulator {
   /// Pearson's kurtosis m4 / m2^2 (3 for a Gaussian; scipy.stats.kurtosis(fisher=False,
   /// bias=True)); NaN for a constant signal.
   double kurtosis() const;
-
  private:
-  /// Merges a block's count, extremes, mean and central sums into the totals.
+  /// Merges a block's count, extremes, mean and central sums M2, M3, M4 (about the block's
+  /// own mean) into the totals (Pébay 2008, eq. 3.1).
   void merge(std::int64_t count, double minimum, double maximum, double mean, double m2, double m3, double m4);
+  /// add_rows for the columns first .. first + n - 1 (n = Width, or runtime_n when Width
+  /// is 0): see moment_accumulator.cpp.
+  template <int Width>
+  static void add_tile(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows, std::int64_t count,
+                       std::ptrdiff_t first, std::ptrdiff_t runtime_n);
   static double nan() { return std::numeric_limits<double>::quiet_NaN(); }
   std::int64_t count_ = 0;
   double mean_ = 0.0, m2_ = 0.0, m3_ = 0.0, m4_ = 0.0;

@@ -77,6 +77,8 @@ class ResponseStatisticsAccumulator {
   /// The samples x[0], x[stride], ..., x[(count - 1) stride], in time order.
   void add(const double* x, std::ptrdiff_t stride, std::int64_t count);
   std::int64_t samples() const { return moments_.count(); }
+  /// The moments (extremes, mean, central sums) of the samples added so far.
+  const MomentAccumulator& moments() const { return moments_; }
   /// Everything above; the fits run here (cost: a few passes over the crests).
   ResponseStatistics result();
 

@@ -2,7 +2,7 @@
 // One-sided power spectral density by Welch's method (Welch 1967, IEEE Trans. Audio
 // Electroacoust. 15(2)): the signal cut into segments of L samples overlapping by L/2,
 // each segment's mean removed and multiplied by a periodic Hann window
-// w_n = (1 - cos(2 pi n / L)) / 2, its discrete Fourier transform X_k taken (Eigen's FFT),
+// w_n = (1 - cos(2 pi n / L)) / 2, its discrete Fourier transform X_k taken (FFTW, real input),
 // and the periodograms averaged:
 //   S(f_k) = c_k |X_k|^2 / (fs sum w_n^2),  f_k = k fs / L,  c_k = 2 except c_0 = c_(L/2) = 1,
 // in units^2/Hz, so that sum S(f_k) df equals the variance (Parseval). These are the

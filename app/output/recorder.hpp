@@ -100,7 +100,9 @@ class Recorder {
     std::vector<std::string> labels;  // CSV column suffixes
     std::function<void(double t, double* out)> fill;
     int series = -1;
-    RunningStatistics statistics = {};  // over the whole record
+    /// Over the samples before the evaluation window: with the window's moments
+    /// (`response`) they make the whole record's (whole_record_statistics).
+    RunningStatistics statistics = {};
     /// Per column, over the evaluation window: the response statistics of
     /// docs/physics/statistics.md (moments, crossings, peaks, extremes, Welch spectrum).
     std::vector<stats::ResponseStatisticsAccumulator> response = {};
@@ -112,6 +114,9 @@ class Recorder {
     std::vector<double> own_last_block = {};
   };
   void add(Channel channel);
+  /// The whole record's minimum, maximum, mean and standard deviation of every column:
+  /// the samples before the window merged with the window's (Pébay 2008, eq. 3.1).
+  static RunningStatistics whole_record_statistics(const Channel& channel);
   /// `rows` samples of a block into every channel's statistics: the last whole block
   /// (on the block worker's thread) or, at the end, the block being built.
   void add_block_statistics(bool last_whole_block, long rows, long window_first_row);

@@ -25,6 +25,8 @@ class RunningStatistics {
   void add_rows(const double* rows, long samples) {
     stats::MomentAccumulator::add_rows(columns_.data(), static_cast<std::ptrdiff_t>(columns_.size()), rows, samples);
   }
+  /// Column `column` takes the samples `other` accumulated as well.
+  void merge(int column, const stats::MomentAccumulator& other) { columns_.at(column).merge(other); }
   long count() const { return static_cast<long>(columns_[0].count()); }
   /// +inf before the first sample.
   std::vector<double> minimum() const {

@@ -3,6 +3,7 @@
 #include <hdf5.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -39,6 +40,16 @@ class H5File {
     H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
     H5Aclose(attribute);
     return value;
+  }
+  /// A numeric attribute of any number of values (a scalar gives one).
+  std::vector<double> double_attributes(const std::string& object, const std::string& name) const {
+    const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t space = H5Aget_space(attribute);
+    std::vector<double> values(static_cast<std::size_t>(std::max<hssize_t>(H5Sget_simple_extent_npoints(space), 0)));
+    if (!values.empty()) H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data());
+    H5Sclose(space);
+    H5Aclose(attribute);
+    return values;
   }
   /// A variable-length string attribute (as ResultFile writes them).
   std::string string_attribute(const std::string& object, const std::string& name) const {

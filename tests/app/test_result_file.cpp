@@ -285,6 +285,50 @@ TEST(ResultFile, RecordFieldsAreStoredInNameOrderAndReadBackByName) {
   std::filesystem::remove(output);
 }
 
+// The whole record's minimum, maximum, mean and standard deviation are the samples before
+// the evaluation window merged with the window's (each sample's moments taken once): over
+// three blocks of 1024 samples with the window starting inside the second, they are those
+// of every sample read back (extremes exactly; mean and sample standard deviation to
+// round-off), for a scalar-per-row and a three-column series.
+TEST(ResultFile, WholeRecordStatisticsSpanTheEvaluationWindowsStart) {
+  const std::string output = temporary("window_spanning.h5");
+  const testing::CommandResult result = testing::run_command_line(
+      testing::heavesim_binary() + " run " + testing::source_path("cases/validation/two_link.yaml") + " -o " + output +
+      " -q --set solver.t_end=3 --set output.interval=0.001 --set output.evaluate_after=1.2345");
+  ASSERT_EQ(result.exit_code, 0) << result.output;
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  for (const auto& [dataset, columns] : {std::pair{"/joints/shoulder/q", 1}, std::pair{"/joints/elbow/reaction_force", 3}}) {
+    const std::vector<double> values = file.read(dataset);
+    const std::size_t rows = values.size() / columns;
+    ASSERT_EQ(rows, 3001u) << dataset;
+    const std::vector<double> minimum = file.double_attributes(dataset, "minimum");
+    const std::vector<double> maximum = file.double_attributes(dataset, "maximum");
+    const std::vector<double> mean = file.double_attributes(dataset, "mean");
+    const std::vector<double> deviation = file.double_attributes(dataset, "standard_deviation");
+    ASSERT_EQ(mean.size(), static_cast<std::size_t>(columns)) << dataset;
+    for (int c = 0; c < columns; ++c) {
+      double low = values[c], high = values[c], sum = 0.0;
+      for (std::size_t r = 0; r < rows; ++r) {
+        low = std::min(low, values[r * columns + c]);
+        high = std::max(high, values[r * columns + c]);
+        sum += values[r * columns + c];
+      }
+      const double average = sum / rows;
+      double squares = 0.0;
+      for (std::size_t r = 0; r < rows; ++r) squares += std::pow(values[r * columns + c] - average, 2);
+      const double sample_deviation = std::sqrt(squares / (rows - 1.0));
+      EXPECT_EQ(minimum[c], low) << dataset << " column " << c;
+      EXPECT_EQ(maximum[c], high) << dataset << " column " << c;
+      // Round-off of sums over 3001 values of size |x|max: a few 1e-16 |x|max * sqrt(n).
+      const double scale = std::max(std::abs(low), std::abs(high));
+      EXPECT_NEAR(mean[c], average, 1e-13 * scale) << dataset << " column " << c;
+      EXPECT_NEAR(deviation[c], sample_deviation, 1e-13 * scale) << dataset << " column " << c;
+    }
+  }
+  std::filesystem::remove(output);
+}
+
 TEST(ResultFile, NumericalFailureExitsWithCodeThreeAndADiagnosis) {
   const std::string output = temporary("unstable.h5");
   const testing::CommandResult result = testing::run_command_line(

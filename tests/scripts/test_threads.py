@@ -82,6 +82,15 @@ class HelgrindSeesNoRace(unittest.TestCase):
         self.assert_clean(code, report)
         self.assertIn("[  PASSED  ] 4 tests", output)
 
+    def test_the_shared_transform_plans(self):
+        # signal/hann_segment.cpp: FFTW plans made on first use by whichever thread comes
+        # first and used by all, transforms made and dropped on four threads at once
+        # (tests/signal/test_hann_segment.cpp).
+        code, output, report = helgrind(
+            [TESTS_BINARY, "--gtest_filter=HannSegmentTransform.TransformsOnSeveralThreadsAtOnceAreTheWindowedDft"])
+        self.assert_clean(code, report)
+        self.assertIn("[  PASSED  ] 1 test", output)
+
 
 class SamplesEvaluatedBeside(unittest.TestCase):
     def test_samples_evaluated_beside_are_those_evaluated_in_line(self):

@@ -5,10 +5,12 @@
 // form sum_n w_n^2 = 3 L / 8 (periodic Hann).
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "signal/hann_segment.hpp"
@@ -46,6 +48,33 @@ TEST(HannSegmentTransform, TransformsOfTwoLengthsAliveTogetherAreTheWindowedDft)
         EXPECT_LT(std::abs(X[k] - reference[k]), 1e-12 * t->length()) << "length " << t->length() << " bin " << k;
     }
   }
+}
+
+// Transforms made, used and dropped on several threads at once (a sweep's runs, the
+// recorder's helper threads): the lengths here are used by no other test, so their FFTW
+// plans are made by whichever thread comes first while the others wait, then used by all
+// (and their windows made again after the last transform of a length is dropped). Every
+// transform is the direct DFT; tests/scripts/test_threads.py runs this under Helgrind.
+TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
+  std::atomic<int> wrong_bins{0}, transforms_done{0};
+  std::vector<std::thread> threads;
+  for (int thread = 0; thread < 4; ++thread)
+    threads.emplace_back([thread, &wrong_bins, &transforms_done] {
+      for (int round = 0; round < 6; ++round)
+        for (int length : {24, 40, 96}) {
+          HannSegmentTransform transform(length);
+          std::vector<double> x(length);
+          for (int n = 0; n < length; ++n) x[n] = std::sin(0.3 * n * (thread + 1) + round) + 0.1 * n;
+          const std::vector<std::complex<double>>& X = transform.transform(x.data());
+          const std::vector<std::complex<double>> reference = hann_windowed_dft(x);
+          for (std::size_t k = 0; k < reference.size(); ++k)
+            if (!(k < X.size() && std::abs(X[k] - reference[k]) < 1e-12 * length)) ++wrong_bins;
+          ++transforms_done;
+        }
+    });
+  for (std::thread& thread : threads) thread.join();
+  EXPECT_EQ(transforms_done.load(), 4 * 6 * 3);
+  EXPECT_EQ(wrong_bins.load(), 0);
 }
 
 TEST(HannSegmentTransform, OddOrTooShortLengthsAreRefused) {

@@ -173,6 +173,43 @@ TEST(ResponseStatistics, RowsOfManyColumnsMatchTheClosedFormsColumnByColumn) {
   }
 }
 
+// add_rows takes each tile width through its own compiled path (1, 2, 3, 4, 6, 8 fixed,
+// others at run time), each column still summed row after row: for every width from 1 to
+// 17, each column's moments equal, bit for bit, those of the same values added as a
+// one-column block, and that column's mean is the plain sum of its values over n (the
+// test's own loop, in the same order), its extremes the plain minimum and maximum.
+TEST(ResponseStatistics, EveryTileWidthGivesTheOneColumnMomentsBitForBit) {
+  const int n = 700;
+  for (int width = 1; width <= 17; ++width) {
+    std::vector<double> rows(n * width);
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < width; ++c)
+        rows[i * width + c] = 100.0 * c + std::sin(0.37 * i + c) + 0.25 * std::cos(1.3 * i * (c + 1));
+    std::vector<MomentAccumulator> by_rows(width);
+    MomentAccumulator::add_rows(by_rows.data(), width, rows.data(), 400);
+    MomentAccumulator::add_rows(by_rows.data(), width, rows.data() + 400 * width, n - 400);
+    for (int c = 0; c < width; ++c) {
+      std::vector<double> column(n);
+      double sum = 0.0;
+      for (int i = 0; i < n; ++i) column[i] = rows[i * width + c];
+      MomentAccumulator alone;
+      MomentAccumulator::add_rows(&alone, 1, column.data(), 400);
+      MomentAccumulator::add_rows(&alone, 1, column.data() + 400, n - 400);
+      const MomentAccumulator& m = by_rows[c];
+      EXPECT_EQ(m.mean(), alone.mean()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.standard_deviation(), alone.standard_deviation()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.skewness(), alone.skewness()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.kurtosis(), alone.kurtosis()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.minimum(), *std::min_element(column.begin(), column.end())) << "width " << width;
+      EXPECT_EQ(m.maximum(), *std::max_element(column.begin(), column.end())) << "width " << width;
+      MomentAccumulator whole;
+      MomentAccumulator::add_rows(&whole, 1, column.data(), n);
+      for (int i = 0; i < n; ++i) sum += column[i];
+      EXPECT_EQ(whole.mean(), sum / n) << "width " << width << ", column " << c;
+    }
+  }
+}
+
 // A column of an interleaved block (the recorder's rows) gives the statistics of the same
 // samples stored contiguously: the strided add copies the column, then takes the
 // contiguous path. Crossings, crests and the spectrum see the same values in the same
