@@ -41,9 +41,10 @@ class H5File {
     H5Aclose(attribute);
     return value;
   }
-  /// A numeric attribute of any number of values (a scalar gives one).
+  /// A numeric attribute of any number of values (a scalar gives one; none if missing).
   std::vector<double> double_attributes(const std::string& object, const std::string& name) const {
     const hid_t attribute = H5Aopen_by_name(file_, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attribute < 0) return {};
     const hid_t space = H5Aget_space(attribute);
     std::vector<double> values(static_cast<std::size_t>(std::max<hssize_t>(H5Sget_simple_extent_npoints(space), 0)));
     if (!values.empty()) H5Aread(attribute, H5T_NATIVE_DOUBLE, values.data());

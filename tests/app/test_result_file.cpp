@@ -306,7 +306,8 @@ TEST(ResultFile, WholeRecordStatisticsSpanTheEvaluationWindowsStart) {
     const std::vector<double> maximum = file.double_attributes(dataset, "maximum");
     const std::vector<double> mean = file.double_attributes(dataset, "mean");
     const std::vector<double> deviation = file.double_attributes(dataset, "standard_deviation");
-    ASSERT_EQ(mean.size(), static_cast<std::size_t>(columns)) << dataset;
+    for (const std::vector<double>* attribute : {&minimum, &maximum, &mean, &deviation})
+      ASSERT_EQ(attribute->size(), static_cast<std::size_t>(columns)) << dataset;
     for (int c = 0; c < columns; ++c) {
       double low = values[c], high = values[c], sum = 0.0;
       for (std::size_t r = 0; r < rows; ++r) {
