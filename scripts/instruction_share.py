@@ -52,6 +52,11 @@ def inclusive_counts(annotated):
     return counts
 
 
+def program_total(annotated):
+    """All the instructions of a profile: its PROGRAM TOTALS line."""
+    return int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", annotated).group(1).replace(",", ""))
+
+
 def total_of(counts, keys):
     """Sum over functions naming one of `keys` before their parameter list (a function
     that calls another of the same part would count twice: the names here do not nest)."""
@@ -71,15 +76,10 @@ def main():
         for command, output in ((run_line(arguments, result), profile), ([arguments.binary, "--version"], start)):
             subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={output}"] + command,
                            check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-        totals = []
-        for output in (profile, start):
-            text = subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", output],
-                                  check=True, capture_output=True, text=True).stdout
-            totals.append(text)
-    counts = inclusive_counts(totals[0])
-    total = counts.get("PROGRAM TOTALS") or int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", totals[0])
-                                                .group(1).replace(",", ""))
-    start_total = int(re.search(r"([\d,]+) \(100.0%\)\s+PROGRAM TOTALS", totals[1]).group(1).replace(",", ""))
+        annotated = [subprocess.run(["callgrind_annotate", "--inclusive=yes", "--threshold=100", output],
+                                    check=True, capture_output=True, text=True).stdout for output in (profile, start)]
+    counts = inclusive_counts(annotated[0])
+    total, start_total = program_total(annotated[0]), program_total(annotated[1])
     shares = {name: total_of(counts, keys) for name, keys in PARTS}
     shares["process start and exit (heavesim --version)"] = start_total
     shares["recording (the rest)"] = total - sum(shares.values())

@@ -12,58 +12,33 @@
 
 namespace heavesim::stats {
 
-std::shared_ptr<const HannSegmentTransform::Window> HannSegmentTransform::window_of_length(int segment_length) {
-  // Transforms are made on several threads (a sweep's runs); the windows they share are
-  // immutable once made. An entry whose last transform has gone is made again.
-  static std::mutex mutex;
-  static std::map<int, std::weak_ptr<const Window>> windows;
-  const std::lock_guard lock(mutex);
-  std::weak_ptr<const Window>& entry = windows[segment_length];
-  if (std::shared_ptr<const Window> existing = entry.lock()) return existing;
-  auto window = std::make_shared<Window>();
-  const int L = segment_length;
-  window->coefficients.resize(L);
-  for (int n = 0; n < L; ++n) {
-    window->coefficients[n] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * n / L));
-    window->power += window->coefficients[n] * window->coefficients[n];
-  }
-  entry = window;
-  return window;
-}
-
-HannSegmentTransform::HannSegmentTransform(int segment_length) {
-  if (segment_length < 4 || segment_length % 2 != 0)
-    throw std::invalid_argument(fmt::format("Welch segment length {}: expected an even number >= 4", segment_length));
-  window_ = window_of_length(segment_length);
-}
+struct HannSegmentLength {
+  std::vector<double> coefficients;  // w_n, n = 0 .. L-1
+  double power = 0.0;                // sum w_n^2
+  fftw_plan plan = nullptr;          // made at the first transform of this length
+};
 
 namespace {
 
-// FFTW's planner is not thread-safe; executing a plan on new arrays (fftw_execute_dft_r2c)
-// is. Transforms run on several threads (a sweep's runs, the recorder's helper threads), so
-// the plans are made under one lock and kept for the life of the process, one per length
-// used (the recorder's are powers of two up to 4096): nothing destroys a plan another
-// thread may be executing. Each transform fetches its plan under the lock, which orders the
-// plan's making before its use for every thread (a race detector sees that; ~25 ns against
-// the transform's ~3 us). The mutex and the plans are never destroyed, so a transform
-// dropped during the program's exit still finds them. Both are namespace-scope and
-// constant-initialized (no function-local static, whose first-use guard a race detector
-// cannot follow); std::mutex has nothing to do at destruction in libstdc++.
-//
+// Everything shared per length lives in one map under one lock, for the life of the
+// process: transforms are made, used and dropped on several threads (a sweep's runs, the
+// recorder's helper threads), and FFTW's planner is not thread-safe while executing a plan
+// on new arrays (fftw_execute_dft_r2c) is. Nothing is ever destroyed, so no thread can lose
+// a plan another is executing, and a transform dropped during the program's exit still
+// finds its length. A run uses a few lengths (the recorder's are powers of two up to 4096).
+// The mutex and the map's pointer are namespace-scope and constant-initialized: no
+// function-local static, whose first-use guard a race detector cannot follow; std::mutex
+// has nothing to do at destruction in libstdc++.
+std::mutex shared_lengths_mutex;
+std::map<int, HannSegmentLength>* shared_lengths = nullptr;  // made under the mutex, never freed
+
 // FFTW_ESTIMATE: the plan is chosen by FFTW's heuristics, without timing trial transforms,
 // so it is the same at every run on one machine (the statistics repeat bit for bit) and
 // costs ~1.6 ms once per length instead of tens of milliseconds. For powers of two FFTW's
 // transform allocates nothing; for an even length with a large prime factor (e.g. 1018,
 // `heavesim rao --segment`) FFTW_ESTIMATE picks Bluestein's or a buffered solver, which
-// allocate at every transform.
-std::mutex planner_mutex;
-std::map<int, fftw_plan>* plans_by_length = nullptr;  // made under planner_mutex, never freed
-
-fftw_plan real_plan_of_length(int length) {
-  const std::lock_guard lock(planner_mutex);
-  if (plans_by_length == nullptr) plans_by_length = new std::map<int, fftw_plan>;
-  std::map<int, fftw_plan>& plans = *plans_by_length;
-  if (const auto known = plans.find(length); known != plans.end()) return known->second;
+// allocate at every transform. Called under shared_lengths_mutex.
+fftw_plan make_real_plan(int length) {
   double* input = fftw_alloc_real(static_cast<std::size_t>(length));
   fftw_complex* output = fftw_alloc_complex(static_cast<std::size_t>(length / 2 + 1));
   const bool allocated = input != nullptr && output != nullptr;
@@ -72,8 +47,34 @@ fftw_plan real_plan_of_length(int length) {
   fftw_free(output);
   if (!allocated) throw std::bad_alloc();
   if (plan == nullptr) throw std::runtime_error(fmt::format("FFTW: no real transform of length {}", length));
-  plans.emplace(length, plan);
   return plan;
+}
+
+// The window of length L, made by the first transform of that length; its plan waits for
+// the first transform() (on the thread that computes statistics, not in a recorder's
+// constructor).
+HannSegmentLength* shared_length(int L) {
+  const std::lock_guard lock(shared_lengths_mutex);
+  if (shared_lengths == nullptr) shared_lengths = new std::map<int, HannSegmentLength>;
+  const auto [entry, made] = shared_lengths->try_emplace(L);
+  HannSegmentLength& shared = entry->second;
+  if (made) {
+    shared.coefficients.resize(L);
+    for (int n = 0; n < L; ++n) {
+      shared.coefficients[n] = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * n / L));
+      shared.power += shared.coefficients[n] * shared.coefficients[n];
+    }
+  }
+  return &shared;
+}
+
+// The plan of `shared`, made on first use. Fetched under the lock by every transform, which
+// orders the plan's making before its use on every thread (~25 ns against the ~3 us
+// transform).
+fftw_plan plan_of(HannSegmentLength& shared) {
+  const std::lock_guard lock(shared_lengths_mutex);
+  if (shared.plan == nullptr) shared.plan = make_real_plan(static_cast<int>(shared.coefficients.size()));
+  return shared.plan;
 }
 
 // Scratch of one transform call, kept by each thread: the windowed segment and, when the
@@ -103,8 +104,19 @@ struct AlignedScratch {
 
 }  // namespace
 
+HannSegmentTransform::HannSegmentTransform(int segment_length) {
+  if (segment_length < 4 || segment_length % 2 != 0)
+    throw std::invalid_argument(fmt::format("Welch segment length {}: expected an even number >= 4", segment_length));
+  shared_ = shared_length(segment_length);
+}
+
+// The window is immutable once made (under the lock that handed it out).
+int HannSegmentTransform::length() const { return static_cast<int>(shared_->coefficients.size()); }
+
+double HannSegmentTransform::window_power() const { return shared_->power; }
+
 const std::vector<std::complex<double>>& HannSegmentTransform::transform(const double* samples) {
-  const std::vector<double>& window = window_->coefficients;
+  const std::vector<double>& window = shared_->coefficients;
   const std::size_t L = window.size();
   double mean = 0.0;
   for (std::size_t n = 0; n < L; ++n) mean += samples[n];
@@ -112,7 +124,7 @@ const std::vector<std::complex<double>>& HannSegmentTransform::transform(const d
   thread_local AlignedScratch scratch;
   scratch.reserve(L);
   for (std::size_t n = 0; n < L; ++n) scratch.segment[n] = (samples[n] - mean) * window[n];
-  const fftw_plan plan = real_plan_of_length(static_cast<int>(L));
+  const fftw_plan plan = plan_of(*shared_);
   transform_.resize(L / 2 + 1);
   // std::complex<double> is laid out as fftw_complex (C++ [complex.numbers]/4). The plan
   // applies to new arrays aligned as the planning ones (fftw_malloc'd): straight into the

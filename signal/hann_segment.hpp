@@ -7,31 +7,29 @@
 // (welch_spectrum.hpp) and the cross spectrum (cross_spectrum.hpp), so that both see the
 // same window and scaling.
 #include <complex>
-#include <memory>
 #include <vector>
 
 namespace heavesim::stats {
+
+/// What every transform of one length shares (signal/hann_segment.cpp): the window and
+/// FFTW's plan, made once per length and kept for the life of the process.
+struct HannSegmentLength;
 
 class HannSegmentTransform {
  public:
   /// `segment_length` L: even, >= 4 (std::invalid_argument otherwise).
   explicit HannSegmentTransform(int segment_length);
-  int length() const { return static_cast<int>(window_->coefficients.size()); }
+  int length() const;
   /// sum w_n^2: the window's power, the density's normalisation S = c |X|^2 / (fs sum w^2).
-  double window_power() const { return window_->power; }
+  double window_power() const;
   /// X_k, k = 0 .. L/2, of the L samples from `samples` (valid until the next call).
   const std::vector<std::complex<double>>& transform(const double* samples);
 
  private:
-  struct Window {
-    std::vector<double> coefficients;
-    double power = 0.0;
-  };
-  /// The window of length L, computed once for every transform of that length alive at a
-  /// time: a recorder holds one transform per recorded column (hundreds), each of which
-  /// would otherwise take L cosines and L doubles.
-  static std::shared_ptr<const Window> window_of_length(int segment_length);
-  std::shared_ptr<const Window> window_;
+  /// Shared with every transform of the same length: a recorder holds one transform per
+  /// recorded column (hundreds), each of which would otherwise take L cosines, L doubles
+  /// and a plan.
+  HannSegmentLength* shared_ = nullptr;
   std::vector<std::complex<double>> transform_;  // L/2 + 1 bins, sized by the first transform
 };
 

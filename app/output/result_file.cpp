@@ -74,17 +74,18 @@ hsize_t record_count(const std::vector<std::string>& fields, const std::vector<d
   return fields.empty() ? 0 : values.size() / fields.size();
 }
 
-/// `rows` rows of `Width` values, `from_stride` values apart, into consecutive rows of
-/// `to`. The width known at compile time makes each row a few register moves: a
-/// std::copy_n of a run-time width is a memmove call per row, and the drilling run's
+/// `rows` rows of `width` values, `from_stride` values apart, into consecutive rows of
+/// `to`. `Width` > 0 fixes the width at compile time, which makes each row a few register
+/// moves: a copy of a run-time width is a memmove call per row, and the drilling run's
 /// staged rows (101 series of 1 to 6 values, 12001 samples) made 1.2 million of them,
 /// 15 % of the samples' thread (docs/performance.md, "Issue #18, eleventh round").
 template <int Width>
-void copy_strided_rows(const double* from, hsize_t from_stride, double* to, hsize_t rows) {
+void copy_strided_rows(const double* from, hsize_t from_stride, double* to, hsize_t rows, hsize_t runtime_width) {
+  const hsize_t width = Width > 0 ? static_cast<hsize_t>(Width) : runtime_width;
   for (hsize_t row = 0; row < rows; ++row) {
     const double* source = from + row * from_stride;
-    double* target = to + row * Width;
-    for (int value = 0; value < Width; ++value) target[value] = source[value];
+    double* target = to + row * width;
+    for (hsize_t value = 0; value < width; ++value) target[value] = source[value];
   }
 }
 
@@ -374,15 +375,14 @@ void ResultFile::move_staged_rows_to_blocks() {
   for (Series& series : series_) {
     const double* from = staging_.data() + series.staging_offset;
     double* to = series.buffer.data() + first * series.width;
-    switch (series.width) {
-      case 1: copy_strided_rows<1>(from, staging_width_, to, staged_samples_); break;
-      case 2: copy_strided_rows<2>(from, staging_width_, to, staged_samples_); break;
-      case 3: copy_strided_rows<3>(from, staging_width_, to, staged_samples_); break;
-      case 4: copy_strided_rows<4>(from, staging_width_, to, staged_samples_); break;
-      case 6: copy_strided_rows<6>(from, staging_width_, to, staged_samples_); break;
-      default:
-        for (hsize_t s = 0; s < staged_samples_; ++s)
-          std::copy_n(from + s * staging_width_, series.width, to + s * series.width);
+    const hsize_t width = series.width;
+    switch (width) {
+      case 1: copy_strided_rows<1>(from, staging_width_, to, staged_samples_, width); break;
+      case 2: copy_strided_rows<2>(from, staging_width_, to, staged_samples_, width); break;
+      case 3: copy_strided_rows<3>(from, staging_width_, to, staged_samples_, width); break;
+      case 4: copy_strided_rows<4>(from, staging_width_, to, staged_samples_, width); break;
+      case 6: copy_strided_rows<6>(from, staging_width_, to, staged_samples_, width); break;
+      default: copy_strided_rows<0>(from, staging_width_, to, staged_samples_, width);
     }
   }
   // The row of a sample still being built (a flush between its appends) leads the next

@@ -52,9 +52,9 @@ TEST(HannSegmentTransform, TransformsOfTwoLengthsAliveTogetherAreTheWindowedDft)
 
 // Transforms made, used and dropped on several threads at once (a sweep's runs, the
 // recorder's helper threads): the lengths here are used by no other test, so their FFTW
-// plans are made by whichever thread comes first while the others wait, then used by all
-// (and their windows made again after the last transform of a length is dropped). Every
-// transform is the direct DFT; tests/scripts/test_threads.py runs this under Helgrind.
+// windows and plans are made by whichever thread comes first while the others wait, then
+// used by all. Every transform is the direct DFT; tests/scripts/test_threads.py runs this
+// under Helgrind.
 TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
   std::atomic<int> wrong_bins{0}, transforms_done{0};
   std::vector<std::thread> threads;
