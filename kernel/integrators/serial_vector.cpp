@@ -19,6 +19,36 @@ realtype weighted_rms_norm_mask(N_Vector x, N_Vector w, N_Vector id) {
   return std::sqrt(counted.square().sum() / static_cast<double>(values.size()));
 }
 
+// z = a x + b y with the roundings of SUNDIALS' N_VLinearSum_Serial, which picks a
+// special case by the coefficients: a (x + y) when a = b, a (x - y) when a = -b, and
+// a x + b y otherwise. Its other cases are these in exact arithmetic and in IEEE
+// arithmetic alike (1 x = x, -1 x = -x, -x + t = t - x, addition commutes), so the
+// three branches give its results bit for bit (test_serial_vector.cpp). z may be x or y:
+// every component reads its own x_i, y_i before it writes z_i.
+void linear_sum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z) {
+  const Eigen::Map<VectorX> first = map(x), second = map(y);
+  Eigen::Map<VectorX> result = map(z);
+  if (a == b)
+    result = a * (first + second);
+  else if (a == -b)
+    result = a * (first - second);
+  else
+    result = a * first + b * second;
+}
+
+// z = c x (N_VScale_Serial: a copy for c = 1 and a negation for c = -1, the same bits).
+void scale(realtype c, N_Vector x, N_Vector z) { map(z) = c * map(x); }
+
+// z = sum_i c_i X_i, added left to right as SUNDIALS' generic N_VLinearCombination does
+// when the vector has no fused operation (z = c_0 X_0, then z = c_i X_i + z for i >= 1):
+// the same roundings in one call instead of nvec. z may be any X_i.
+int linear_combination(int count, realtype* coefficients, N_Vector* vectors, N_Vector z) {
+  Eigen::Map<VectorX> result = map(z);
+  result = coefficients[0] * map(vectors[0]);
+  for (int i = 1; i < count; ++i) result = coefficients[i] * map(vectors[i]) + result;
+  return 0;
+}
+
 }  // namespace
 
 N_Vector new_serial_vector(sunindextype length, SUNContext context) {
@@ -26,6 +56,9 @@ N_Vector new_serial_vector(sunindextype length, SUNContext context) {
   if (!vector) throw std::bad_alloc();
   vector->ops->nvwrmsnorm = weighted_rms_norm;
   vector->ops->nvwrmsnormmask = weighted_rms_norm_mask;
+  vector->ops->nvlinearsum = linear_sum;
+  vector->ops->nvscale = scale;
+  vector->ops->nvlinearcombination = linear_combination;
   return vector;
 }
 

@@ -1,22 +1,31 @@
 #pragma once
-// SUNDIALS serial N_Vectors whose weighted RMS norms are Eigen expressions.
+// SUNDIALS serial N_Vectors whose hot operations are Eigen expressions.
 //
-// Why: IDA and ARKODE take several weighted RMS norms of the state a step (the error
-// test at orders k-1, k, k+1, Newton's convergence test), and SUNDIALS 6.4's serial
-// norms are scalar loops behind two indirect calls: 179 ns for 40 components against
-// 21 ns for the same sum as an Eigen expression on this machine (2026-11-29), 6.9 % of
-// the 3-hour H1 run. The norms are the same sums
+// Why: Debian 12's SUNDIALS 6.4.1 libraries are built without optimization (objdump of
+// libsundials_ida.so.6: every loop counter and local lives on the stack, -O0 code), so
+// each serial vector operation costs about 25 instructions per component and term: a
+// 6-term linear combination of 17 components takes ~2,600 instructions against ~150
+// for the same sums compiled here (2026-11-30). IDA and ARKODE spend most of their own
+// time in these operations: the weighted RMS norms (the error test at orders k-1, k,
+// k+1, Newton's convergence test), the linear sums and scalings of the predictor and
+// corrector, and the linear combinations of the predictor and of IDAGetSolution's
+// interpolation at every output time (11.4 % + 9.4 % of the drilling run's instructions
+// before this). SUNDIALS lets a vector carry its own operations; the integrators'
+// internal vectors are clones of the state vector and inherit them.
+//
+// The norms are the same sums
 //   ||x||_w = sqrt( (1/n) sum_i (x_i w_i)^2 ),  masked: over the i with id_i > 0
-// (SUNDIALS' definition, nvector_serial.c), added in another order (vectorized).
-// SUNDIALS lets a vector carry its own operations; the integrators' internal vectors
-// are clones of the state vector and inherit them.
+// (SUNDIALS' definition, nvector_serial.c), added in another order (vectorized). The
+// linear sums, scalings and linear combinations make SUNDIALS' own roundings in SUNDIALS'
+// own order, so integrating gives the same bits as before
+// (tests/kernel/test_serial_vector.cpp against the library's serial operations).
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 
 namespace heavesim::sundials {
 
-/// A new serial vector of `length` components with the Eigen norms (nvwrmsnorm,
-/// nvwrmsnormmask); N_VDestroy frees it.
+/// A new serial vector of `length` components with the Eigen operations (nvwrmsnorm,
+/// nvwrmsnormmask, nvlinearsum, nvscale, nvlinearcombination); N_VDestroy frees it.
 N_Vector new_serial_vector(sunindextype length, SUNContext context);
 
 }  // namespace heavesim::sundials

@@ -11,9 +11,12 @@
 
 namespace heavesim::sundials {
 
-inline Eigen::Map<VectorX> map(N_Vector v) {
-  return Eigen::Map<VectorX>(N_VGetArrayPointer(v), N_VGetLength(v));
-}
+/// The components of a serial N_Vector (every vector the integrators make or receive is
+/// one: ours or IDA's and ARKODE's clones of ours). Read through the serial content, not
+/// N_VGetArrayPointer and N_VGetLength: Debian's SUNDIALS is built without optimization
+/// (serial_vector.hpp), and those two dispatches cost ~50 instructions a map, several maps
+/// per residual and per vector operation.
+inline Eigen::Map<VectorX> map(N_Vector v) { return Eigen::Map<VectorX>(NV_DATA_S(v), NV_LENGTH_S(v)); }
 
 /// The text of a SUNDIALS *GetReturnFlagName result, which the caller must free().
 inline std::string take_flag_name(char* name) {
