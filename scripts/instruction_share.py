@@ -10,7 +10,8 @@ plain run) and reads the inclusive instruction counts of named functions on ever
 Unlike the CPU samples of scripts/recording_share.py, an instruction count does not depend
 on what else the shared machine runs, so two binaries compare in one call each; it does not
 see cache misses, page faults or time in the kernel (the writes' copies into the page
-cache), which the wall-time ratios of docs/performance.md do.
+cache), which the wall-time ratios of docs/performance.md do. The same split is printed
+for the integrating thread alone, without the helper threads that run beside it.
 """
 import os
 import re
@@ -87,6 +88,14 @@ def main():
     print_shares(shares.items(), total)
     print("  named parts of the recording:")
     print_shares([(name, total_of(counts, keys)) for name, keys in DETAILS], total)
+    # The integrating thread alone (scripts/recording_share.py's view, counted): everything
+    # but the helper threads, whose work is all recording and runs beside it on a second core.
+    helpers = total_of(counts, ("BackgroundWorker::loop",))
+    main_thread = total - helpers
+    main_shares = [(name, count) for name, count in shares.items() if name != "recording (the rest)"]
+    main_shares.append(("recording (the rest)", main_thread - sum(count for _, count in main_shares)))
+    print(f"{main_thread:,} of them on the integrating thread (the helper threads' {helpers:,} run beside it):")
+    print_shares(main_shares, main_thread)
 
 
 if __name__ == "__main__":
