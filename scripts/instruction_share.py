@@ -91,6 +91,11 @@ def main():
     # The integrating thread alone (scripts/recording_share.py's view, counted): everything
     # but the helper threads, whose work is all recording and runs beside it on a second core.
     helpers = total_of(counts, ("BackgroundWorker::loop",))
+    if helpers == 0:
+        # A run too short for helper threads (Recorder::why_samples_in_line), or a build that
+        # inlined BackgroundWorker::loop: then this split would silently be the process's.
+        print("  (no helper thread found: BackgroundWorker::loop has no instructions; the integrating"
+              " thread's split below is the whole process's)")
     main_thread = total - helpers
     main_shares = [(name, count) for name, count in shares.items() if name != "recording (the rest)"]
     main_shares.append(("recording (the rest)", main_thread - sum(count for _, count in main_shares)))

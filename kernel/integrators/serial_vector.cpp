@@ -20,15 +20,21 @@ realtype weighted_rms_norm_mask(N_Vector x, N_Vector w, N_Vector id) {
 }
 
 // z = a x + b y with the roundings of SUNDIALS' N_VLinearSum_Serial, which picks a
-// special case by the coefficients: a (x + y) when a = b, a (x - y) when a = -b, and
-// a x + b y otherwise. Its other cases are these in exact arithmetic and in IEEE
-// arithmetic alike (1 x = x, -1 x = -x, -x + t = t - x, addition commutes), so the
-// three branches give its results bit for bit (test_serial_vector.cpp). z may be x or y:
-// every component reads its own x_i, y_i before it writes z_i.
+// special case by the coefficients. Four branches give its results bit for bit, signed
+// zeros included (tests/kernel/test_serial_vector.cpp):
+//   a = -1:   b y - x      (its VLin2 and VDiff, and y -= x in place: -(x - y) would make
+//                           -0 where x = y, and -(x + y) where x = -y)
+//   a = b:    a (x + y)    (VScaleSum; VSum when a = 1)
+//   a = -b:   a (x - y)    (VScaleDiff; VDiff when a = 1)
+//   else:     a x + b y    (its VLin1, VLin2 with b = -1, y += a x and the general case:
+//                           1 x = x, t + (-y) = t - y and addition commutes, in IEEE too)
+// z may be x or y: every component reads its own x_i, y_i before it writes z_i.
 void linear_sum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z) {
   const Eigen::Map<VectorX> first = map(x), second = map(y);
   Eigen::Map<VectorX> result = map(z);
-  if (a == b)
+  if (a == -1.0)
+    result = b * second - first;
+  else if (a == b)
     result = a * (first + second);
   else if (a == -b)
     result = a * (first - second);
