@@ -25,10 +25,10 @@ from recording_share import case_parser, print_shares, run_line  # noqa: E402
 
 # (part, function names whose inclusive counts add up to it). The integrator's residuals
 # evaluate the system inside advance_to, so they count as integration, as they should.
-PARTS = [
+PARTS = [  # names that do not nest in a run (load_case is resolved_case_tree + read_case, which `run` calls itself)
     ("integration", ("IdaIntegrator::advance_to", "IdaIntegrator::initialize", "ErkIntegrator::advance_to",
                      "Rk4Integrator::advance_to", "HhtIntegrator::advance_to", "make_integrator")),
-    ("set-up", ("heavesim::load_case", "heavesim::build_scene")),
+    ("set-up", ("heavesim::load_case", "heavesim::resolved_case_tree", "heavesim::read_case", "heavesim::build_scene")),
 ]
 DETAILS = [
     ("recorder constructor (channels, datasets, attributes)", ("Recorder::Recorder",)),
@@ -59,11 +59,12 @@ def program_total(annotated):
 
 
 def total_of(counts, keys):
-    """Sum over functions naming one of `keys` before their parameter list (a function
+    """Sum over the functions whose name (before its parameter list) ends in one of `keys`
+    (so `load_case` is not `load_case_tree`; a function
     that calls another of the same part would count twice: the names here do not nest)."""
     total = 0
     for key in keys:
-        total += max((value for name, value in counts.items() if key in name.split("(")[0]), default=0)
+        total += max((value for name, value in counts.items() if name.split("(")[0].endswith(key)), default=0)
     return total
 
 

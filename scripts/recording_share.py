@@ -23,7 +23,7 @@ import tempfile
 
 PARTS = [
     ("integration", ("Integrator::advance_to", "Integrator::initialize", "make_integrator")),
-    ("set-up", ("load_case", "build_scene")),
+    ("set-up", ("load_case", "resolved_case_tree", "read_case", "build_scene")),
 ]
 # Named pieces of the recording, reported beside the three shares (a stack may hold several).
 DETAILS = [

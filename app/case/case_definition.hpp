@@ -20,6 +20,8 @@
 
 namespace heavesim {
 
+class CaseNode;  // app/case/case_node.hpp
+
 /// Initial joint coordinates q (nq) and speeds v (nv), in the kernel's convention.
 struct JointInitialState {
   VectorX q;
@@ -126,9 +128,19 @@ struct CaseDefinition {
 
 /// Loads, composes (includes, --set overrides) and checks a case file. Throws
 /// InputError for anything malformed or, unless `allow_large_runs`, too large to run
-/// (RunLimits); nothing is run.
+/// (RunLimits); nothing is run. read_case(resolved_case_tree(path, overrides), path, ...).
 CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides = {},
                          bool allow_large_runs = false);
+
+/// The case file at `path` with its includes merged and the `--set` overrides applied
+/// (app/case/case_merge.hpp); InputError for a malformed file or override.
+CaseNode resolved_case_tree(const std::string& path, const std::vector<std::string>& overrides);
+
+/// The checked definition of a resolved case tree; `path` is the case file's (its name's
+/// default, the sources' file names). Each call reads the tree afresh: two definitions of
+/// one tree share nothing (each expression has its own workspace), so a run reads its case
+/// files once for the two scenes it may build (cli/commands/run_command.cpp).
+CaseDefinition read_case(const CaseNode& tree, const std::string& path, bool allow_large_runs);
 
 /// Converts a kernel ModelError into an InputError pointing into the case.
 InputError to_input_error(const CaseDefinition& definition, const ModelError& error);

@@ -494,10 +494,17 @@ void read_parameters(const std::optional<NodeReader>& reader, ExpressionContext&
 
 }  // namespace
 
-CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides, bool allow_large_runs) {
+CaseNode resolved_case_tree(const std::string& path, const std::vector<std::string>& overrides) {
   CaseNode tree = load_case_tree(path);
   for (const std::string& assignment : overrides) apply_override(tree, assignment);
+  return tree;
+}
 
+CaseDefinition load_case(const std::string& path, const std::vector<std::string>& overrides, bool allow_large_runs) {
+  return read_case(resolved_case_tree(path, overrides), path, allow_large_runs);
+}
+
+CaseDefinition read_case(const CaseNode& tree, const std::string& path, bool allow_large_runs) {
   CaseDefinition definition;
   definition.source_path = path;
   definition.limits.allow_large_runs = allow_large_runs;

@@ -13,6 +13,7 @@
 #include <fmt/ranges.h>
 
 #include "app/case/case_definition.hpp"
+#include "app/case/case_node.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/command_support.hpp"
 #include "cli/commands/result_metadata.hpp"
@@ -46,7 +47,8 @@ int run_command(const RunOptions& options) {
   // Before anything touches HDF5 (a BEM file read while loading does).
   hdf5::skip_library_exit_cleanup();
   const StopSignals signals;
-  const CaseDefinition definition = load_case(options.case_path, options.overrides, options.allow_large_runs);
+  const CaseNode case_tree = resolved_case_tree(options.case_path, options.overrides);
+  const CaseDefinition definition = read_case(case_tree, options.case_path, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
 
   // The output place is checked (created) before the scene is built.
@@ -70,12 +72,13 @@ int run_command(const RunOptions& options) {
   }
   // The samples are evaluated on a second build of the scene, on a second thread beside
   // the integration, where that gives the same numbers (Recorder::why_samples_in_line).
-  // Its case is loaded again: the two scenes share nothing (an expression of t, a
-  // driver's or a load's, keeps its evaluation workspace).
+  // Its case is read again from the same tree (the files are not parsed twice): the two
+  // scenes share nothing (an expression of t, a driver's or a load's, keeps its
+  // evaluation workspace).
   std::optional<CaseDefinition> recording_definition;
   std::optional<Scene> recording_scene;
   if (options.samples_beside && Recorder::why_samples_in_line(definition, scene).empty()) {
-    recording_definition.emplace(load_case(options.case_path, options.overrides, options.allow_large_runs));
+    recording_definition.emplace(read_case(case_tree, options.case_path, options.allow_large_runs));
     recording_scene.emplace(build_scene(*recording_definition));
   }
   Recorder recorder(recording_definition ? *recording_definition : definition,
