@@ -6,8 +6,8 @@ set-up, or recording (the result file's layout, the samples, the statistics, the
 
 Runs the case `--runs` times under `perf record --call-graph dwarf` (Debian's linux-perf)
 and classifies every sample of the main thread by the frames on its stack:
-integration (Integrator::advance_to, initialize, make_integrator), set-up (load_case,
-build_scene) and everything else run_command does, which is recording. The share is of
+integration (Integrator::advance_to, initialize, make_integrator), set-up (load_case or
+resolved_case_tree and read_case, build_scene) and everything else run_command does, which is recording. The share is of
 CPU samples, so it does not depend on the machine's speed between runs, but it counts
 only the main thread (the helper threads, reported beside it, run on the other core); the
 wall-time proxy of docs/performance.md (a run with 7 samples against the full one)

@@ -136,10 +136,11 @@ CaseDefinition load_case(const std::string& path, const std::vector<std::string>
 /// (app/case/case_merge.hpp); InputError for a malformed file or override.
 CaseNode resolved_case_tree(const std::string& path, const std::vector<std::string>& overrides);
 
-/// The checked definition of a resolved case tree; `path` is the case file's (its name's
-/// default, the sources' file names). Each call reads the tree afresh: two definitions of
-/// one tree share nothing (each expression has its own workspace), so a run reads its case
-/// files once for the two scenes it may build (cli/commands/run_command.cpp).
+/// The checked definition of a resolved case tree; `path` is the case file's (the default
+/// of the case's name, and where location_of points when no key matches). Each call reads
+/// the tree afresh and changes nothing in it: two definitions of one tree share nothing
+/// (each expression has its own workspace), so a run parses its case's YAML once for the
+/// two scenes it may build (cli/commands/run_command.cpp).
 CaseDefinition read_case(const CaseNode& tree, const std::string& path, bool allow_large_runs);
 
 /// Converts a kernel ModelError into an InputError pointing into the case.

@@ -47,8 +47,9 @@ int run_command(const RunOptions& options) {
   // Before anything touches HDF5 (a BEM file read while loading does).
   hdf5::skip_library_exit_cleanup();
   const StopSignals signals;
-  const CaseNode case_tree = resolved_case_tree(options.case_path, options.overrides);
-  const CaseDefinition definition = read_case(case_tree, options.case_path, options.allow_large_runs);
+  // Kept until the recorder's definition is read from it too (below), then dropped.
+  std::optional<CaseNode> case_tree(resolved_case_tree(options.case_path, options.overrides));
+  const CaseDefinition definition = read_case(*case_tree, options.case_path, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
 
   // The output place is checked (created) before the scene is built.
@@ -78,9 +79,10 @@ int run_command(const RunOptions& options) {
   std::optional<CaseDefinition> recording_definition;
   std::optional<Scene> recording_scene;
   if (options.samples_beside && Recorder::why_samples_in_line(definition, scene).empty()) {
-    recording_definition.emplace(read_case(case_tree, options.case_path, options.allow_large_runs));
+    recording_definition.emplace(read_case(*case_tree, options.case_path, options.allow_large_runs));
     recording_scene.emplace(build_scene(*recording_definition));
   }
+  case_tree.reset();
   Recorder recorder(recording_definition ? *recording_definition : definition,
                     recording_scene ? *recording_scene : scene, &file, csv ? &*csv : nullptr);
   if (recording_scene) recorder.evaluate_on_second_thread();

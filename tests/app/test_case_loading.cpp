@@ -1,11 +1,15 @@
 // Case loading: values, expressions, orientation forms, includes and overrides.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_merge.hpp"
+#include "app/case/case_node.hpp"
 #include "tests/test_support.hpp"
 
 namespace heavesim {
@@ -125,6 +129,36 @@ TEST(CaseLoading, FreeJointNamedInitialStateIsConvertedToBodyAxes) {
   const Matrix3 R = Eigen::AngleAxisd(0.4, Vector3::UnitX()).toRotationMatrix();
   EXPECT_TRUE(state.v.head<3>().isApprox(R.transpose() * Vector3(0.6, 0.2, 3.0), 1e-14));
   EXPECT_NEAR(state.q[3], std::cos(0.2), 1e-15);  // quaternion w
+}
+
+// `heavesim run` reads its two definitions (the integrated scene's and the recorder's) from
+// one resolved tree: each the same as load_case's, the tree left as it was, and the drivers'
+// expressions evaluating to the closed form 3 t + sin 2 t (and its derivatives) in both,
+// interleaved (a workspace shared between them would still agree here; that they share none
+// is what the two reads are for, and what a second evaluation thread relies on).
+TEST(CaseLoading, TwoDefinitionsReadFromOneTreeAreLoadCasesOwn) {
+  const std::string path = testing::source_path("cases/kinematics/driven_slider_crank.yaml");
+  const std::vector<std::string> overrides = {"solver.t_end=2"};
+  const CaseNode tree = resolved_case_tree(path, overrides);
+  const std::string tree_text = to_yaml_text(tree);
+  const CaseDefinition loaded = load_case(path, overrides);
+  const CaseDefinition first = read_case(tree, path, false), second = read_case(tree, path, false);
+  EXPECT_EQ(to_yaml_text(tree), tree_text);  // reading changes nothing in the tree
+  for (const CaseDefinition* definition : {&first, &second}) {
+    EXPECT_EQ(definition->name, loaded.name);
+    EXPECT_EQ(definition->resolved_yaml, loaded.resolved_yaml);
+    EXPECT_EQ(definition->sources.size(), loaded.sources.size());
+    EXPECT_DOUBLE_EQ(definition->solver.t_end, 2.0);
+    ASSERT_EQ(definition->drivers.size(), 1u);
+  }
+  for (const double t : {0.0, 0.3, 1.7}) {
+    const DriverMotion a = first.drivers[0].motion(t), b = second.drivers[0].motion(t);
+    for (const DriverMotion& motion : {a, b}) {
+      EXPECT_NEAR(motion.position, 3.0 * t + std::sin(2.0 * t), 1e-14);
+      EXPECT_NEAR(motion.velocity, 3.0 + 2.0 * std::cos(2.0 * t), 1e-14);
+      EXPECT_NEAR(motion.acceleration, -4.0 * std::sin(2.0 * t), 1e-14);
+    }
+  }
 }
 
 }  // namespace
