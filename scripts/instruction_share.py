@@ -21,14 +21,14 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from recording_share import case_parser, print_shares, run_line  # noqa: E402
+from recording_share import SET_UP_FUNCTIONS, case_parser, print_shares, run_line  # noqa: E402
 
 # (part, function names whose inclusive counts add up to it). The integrator's residuals
 # evaluate the system inside advance_to, so they count as integration, as they should.
 PARTS = [  # names that do not nest in a run (load_case is resolved_case_tree + read_case, which `run` calls itself)
     ("integration", ("IdaIntegrator::advance_to", "IdaIntegrator::initialize", "ErkIntegrator::advance_to",
                      "Rk4Integrator::advance_to", "HhtIntegrator::advance_to", "make_integrator")),
-    ("set-up", ("heavesim::load_case", "heavesim::resolved_case_tree", "heavesim::read_case", "heavesim::build_scene")),
+    ("set-up", tuple("heavesim::" + name for name in SET_UP_FUNCTIONS)),
 ]
 DETAILS = [
     ("recorder constructor (channels, datasets, attributes)", ("Recorder::Recorder",)),

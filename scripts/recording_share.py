@@ -21,9 +21,12 @@ import subprocess
 import sys
 import tempfile
 
+# The functions of the set-up: reading the case (load_case, or resolved_case_tree and then
+# read_case, as `run` does) and building its scene. scripts/instruction_share.py counts the same.
+SET_UP_FUNCTIONS = ("load_case", "resolved_case_tree", "read_case", "build_scene")
 PARTS = [
     ("integration", ("Integrator::advance_to", "Integrator::initialize", "make_integrator")),
-    ("set-up", ("load_case", "resolved_case_tree", "read_case", "build_scene")),
+    ("set-up", SET_UP_FUNCTIONS),
 ]
 # Named pieces of the recording, reported beside the three shares (a stack may hold several).
 DETAILS = [

@@ -5,6 +5,8 @@
 
 #include <Eigen/Core>
 
+#include "signal/fixed_width.hpp"
+
 namespace heavesim::stats {
 
 void MomentAccumulator::add(double x) {
@@ -99,15 +101,9 @@ void MomentAccumulator::add_rows(MomentAccumulator* columns, std::ptrdiff_t widt
   constexpr std::ptrdiff_t tile = 8;
   for (std::ptrdiff_t first = 0; first < width; first += tile) {
     const std::ptrdiff_t n = std::min(tile, width - first);
-    switch (n) {
-      case 1: add_tile<1>(columns, width, rows, count, first, n); break;
-      case 2: add_tile<2>(columns, width, rows, count, first, n); break;
-      case 3: add_tile<3>(columns, width, rows, count, first, n); break;
-      case 4: add_tile<4>(columns, width, rows, count, first, n); break;
-      case 6: add_tile<6>(columns, width, rows, count, first, n); break;
-      case 8: add_tile<8>(columns, width, rows, count, first, n); break;
-      default: add_tile<0>(columns, width, rows, count, first, n);
-    }
+    call_with_fixed_width<1, 2, 3, 4, 6, 8>(n, [&](auto fixed) {
+      add_tile<decltype(fixed)::value>(columns, width, rows, count, first, n);
+    });
   }
 }
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "io/hdf5/hdf5_error.hpp"
+#include "signal/fixed_width.hpp"
 
 namespace heavesim {
 namespace {
@@ -376,14 +377,9 @@ void ResultFile::move_staged_rows_to_blocks() {
     const double* from = staging_.data() + series.staging_offset;
     double* to = series.buffer.data() + first * series.width;
     const hsize_t width = series.width;
-    switch (width) {
-      case 1: copy_strided_rows<1>(from, staging_width_, to, staged_samples_, width); break;
-      case 2: copy_strided_rows<2>(from, staging_width_, to, staged_samples_, width); break;
-      case 3: copy_strided_rows<3>(from, staging_width_, to, staged_samples_, width); break;
-      case 4: copy_strided_rows<4>(from, staging_width_, to, staged_samples_, width); break;
-      case 6: copy_strided_rows<6>(from, staging_width_, to, staged_samples_, width); break;
-      default: copy_strided_rows<0>(from, staging_width_, to, staged_samples_, width);
-    }
+    stats::call_with_fixed_width<1, 2, 3, 4, 6>(static_cast<std::ptrdiff_t>(width), [&](auto fixed) {
+      copy_strided_rows<decltype(fixed)::value>(from, staging_width_, to, staged_samples_, width);
+    });
   }
   // The row of a sample still being built (a flush between its appends) leads the next
   // run. A full run is moved by end_sample(), between samples: nothing is being built then.
