@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <thread>
 #include <utility>
@@ -101,7 +102,7 @@ int usable_cores() {
 
 }  // namespace
 
-Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
+Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile& file, CsvWriter* csv,
                    const std::vector<ExtraChannel>& extra_channels)
     : scene_(scene),
       file_(file),
@@ -113,17 +114,16 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* f
   define_channels(definition);
   for (const ExtraChannel& extra : extra_channels)
     add({extra.path, 0, extra.units, extra.description, {}, [value = extra.value](double, double* out) { out[0] = value(); }});
-  if (file_) {
-    // HDF5 lists groups alphabetically; keep the model's (topological) order too.
-    const Model& model = *scene_.model;
-    std::string bodies, joints;
-    for (int i = 1; i < model.num_links(); ++i) {
-      bodies += (i > 1 ? "," : "") + model.links[i].name;
-      joints += (i > 1 ? "," : "") + model.joints[i].name;
-    }
-    if (definition.output.bodies) file_->set_attribute("/bodies", "order", bodies);
-    if (definition.output.joints || definition.output.reactions) file_->set_attribute("/joints", "order", joints);
+  if (csv_) csv_row_.assign(row_width_, 0.0);
+  // HDF5 lists groups alphabetically; keep the model's (topological) order too.
+  const Model& model = *scene_.model;
+  std::string bodies, joints;
+  for (int i = 1; i < model.num_links(); ++i) {
+    bodies += (i > 1 ? "," : "") + model.links[i].name;
+    joints += (i > 1 ? "," : "") + model.joints[i].name;
   }
+  if (definition.output.bodies) file_.set_attribute("/bodies", "order", bodies);
+  if (definition.output.joints || definition.output.reactions) file_.set_attribute("/joints", "order", joints);
   if (csv_) {
     std::vector<std::string> header;
     // "joints/hook/q [m]": the units of the HDF5 attribute, per column.
@@ -143,10 +143,6 @@ void Recorder::add(Channel channel) {
       for (int c = 0; c < width; ++c) channel.labels.push_back("[" + std::to_string(c) + "]");
   }
   if (channel.column_units.empty()) channel.column_units.assign(width, channel.units);
-  if (!file_) {  // sized once, here
-    channel.own_block.assign(ResultFile::block_rows * width, 0.0);
-    channel.own_last_block.assign(ResultFile::block_rows * width, 0.0);
-  }
   channel.statistics = RunningStatistics(width);
   // Cost (docs/performance.md): moments for every column; crossings, peaks, extreme-value
   // fits and the Welch spectrum for the channels a designer takes extremes of, the scalar
@@ -158,15 +154,19 @@ void Recorder::add(Channel channel) {
     options.segment_length = -1;
   }
   for (int c = 0; c < width; ++c) channel.response.emplace_back(options, window_samples_);
-  if (file_) {
-    channel.series = file_->add_series(channel.path, channel.columns, channel.units, channel.description);
-    // The statistics exist from the start, NaN until finish() overwrites them in place
-    // (after the layout is published, a series' object header must not grow:
-    // app/output/result_file.hpp).
-    const std::vector<std::string> names = statistic_names(channel);
-    file_->set_record_attribute(channel.series, "statistics", names,
-                                std::vector<double>(names.size() * width, std::nan("")));
-  }
+  channel.row_offset = row_width_;
+  row_width_ += width;
+  if (channel.fill) fills_.push_back({std::move(channel.fill), channel.row_offset});
+  channel.series = file_.add_series(channel.path, channel.columns, channel.units, channel.description);
+  // The recorder's row is the file's staged sample: the file holds its series only.
+  if (file_.staging_offset(channel.series) != static_cast<hsize_t>(channel.row_offset))
+    throw std::logic_error("Recorder: the result file holds series other than the recorder's: " + channel.path);
+  // The statistics exist from the start, NaN until finish() overwrites them in place
+  // (after the layout is published, a series' object header must not grow:
+  // app/output/result_file.hpp).
+  const std::vector<std::string> names = statistic_names(channel);
+  file_.set_record_attribute(channel.series, "statistics", names,
+                             std::vector<double>(names.size() * width, std::nan("")));
   channels_.push_back(std::move(channel));
 }
 
@@ -343,15 +343,15 @@ void Recorder::define_driver_channels() {
 
 void Recorder::define_element_channels() {
   const MultibodySystem& system = *scene_.system;
-  element_values_.resize(system.force_elements().size());
+  element_row_offsets_.assign(system.force_elements().size(), -1);
   for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
     const ForceElement& element = *system.force_elements()[e];
-    element_values_[e].resize(element.channels().size());
-    for (std::size_t c = 0; c < element.channels().size(); ++c) {
-      const ElementChannel& channel = element.channels()[c];
-      add({"/forces/" + element.name() + "/" + channel.name, 0, channel.units, channel.description, {},
-           [this, e, c](double, double* out) { out[0] = element_values_[e][c]; }});
-    }
+    if (element.channels().empty()) continue;
+    // Scalar channels added one after the other lie side by side in the row: the
+    // element's outputs() writes them all there (record_evaluation), no fill of their own.
+    element_row_offsets_[e] = row_width_;
+    for (const ElementChannel& channel : element.channels())
+      add({"/forces/" + element.name() + "/" + channel.name, 0, channel.units, channel.description, {}, {}});
   }
 }
 
@@ -434,11 +434,16 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   const long evaluation = system.data().stages.evaluation;
   const unsigned stages = StageMarker::positions | StageMarker::velocities | StageMarker::accelerations |
                           (needs_reactions_ ? StageMarker::reactions : 0u);
-  for (std::size_t e = 0; e < element_values_.size(); ++e) {
+  // The sample's row: the file's staged sample, every channel's values side by side.
+  double* const row = file_.sample_row();
+  for (std::size_t e = 0; e < element_row_offsets_.size(); ++e) {
+    if (element_row_offsets_[e] < 0) continue;
     const ForceElement& element = *system.force_elements()[e];
-    if (element_values_[e].empty()) continue;
+    const std::span<double> values(row + element_row_offsets_[e], element.channels().size());
+    // The row holds an older sample's values: one the element leaves unwritten reads NaN.
+    std::fill(values.begin(), values.end(), std::numeric_limits<double>::quiet_NaN());
     element.outputs(t, system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()),
-                    element_values_[e]);
+                    values);
   }
   compensators_.observe(t, y);
   if (records_energy_) {
@@ -466,21 +471,15 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   require_stages(system.data(), stages, t, evaluation);
   for (std::size_t i = 1; i < body_frames_.size(); ++i)
     body_frames_[i] = system.data().X_world_link[i] * system.model().links[i].X_link_body;
-  csv_row_.clear();
-  for (Channel& channel : channels_) {
-    // Filled in place: the file's staged row of the sample (or the recorder's own block).
-    double* row = file_ ? file_->sample_row(channel.series)
-                        : channel.own_block.data() + block_samples_ * std::max(channel.columns, 1);
-    channel.fill(t, row);
-    if (csv_) csv_row_.insert(csv_row_.end(), row, row + std::max(channel.columns, 1));
-  }
+  for (Fill& fill : fills_) fill.write(t, row + fill.row_offset);
+  if (csv_) csv_row_.assign(row, row + row_width_);  // sized once: no allocation
   if (window_first_row_ < 0 && compensators_.in_window(t)) window_first_row_ = block_samples_;
   // This sample ends a block: the file's end_sample() writes it and makes it the last
   // whole block, in place of the one the block worker may still be reading.
   const bool ends_block = block_samples_ + 1 == static_cast<long>(ResultFile::block_rows);
   require_file_block_agrees();
   if (ends_block) block_worker_.wait();
-  if (file_) file_->end_sample();
+  file_.end_sample();
   // The sample is in the file: counted with the file's count, before anything else can
   // fail (a CSV write).
   ++block_samples_;
@@ -503,13 +502,11 @@ void Recorder::require_file_block_agrees() const {
   // The file ends its block when the recorder does (its end_sample() swaps the last whole
   // block, which the statistics worker reads): a count that drifted would race, and the
   // block being built would not be the samples the recorder counts.
-  if (file_ && file_->buffered_samples() != static_cast<hsize_t>(block_samples_))
+  if (file_.buffered_samples() != static_cast<hsize_t>(block_samples_))
     throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
 }
 
 void Recorder::hand_over_block() {
-  if (!file_)
-    for (Channel& channel : channels_) channel.own_block.swap(channel.own_last_block);
   handed_window_first_row_ = window_first_row_;
   block_samples_ = 0;
   window_first_row_ = window_first_row_ >= 0 ? 0 : -1;  // the window, once begun, runs to the end
@@ -519,11 +516,10 @@ void Recorder::hand_over_block() {
 void Recorder::add_block_statistics(bool last_whole_block, long rows, long window_first_row) {
   // Column by column over a block instead of channel by channel every sample: the
   // recording's share of the drilling run (docs/performance.md). The rows are where the
-  // channels wrote them, in the file's blocks or the recorder's own.
+  // channels wrote them, in the file's blocks.
   for (Channel& channel : channels_) {
     const long width = std::max(channel.columns, 1);
-    const double* block = file_ ? (last_whole_block ? file_->last_block(channel.series) : file_->block(channel.series))
-                                : (last_whole_block ? channel.own_last_block.data() : channel.own_block.data());
+    const double* block = last_whole_block ? file_.last_block(channel.series) : file_.block(channel.series);
     // Each sample's moments are taken once: the window's rows by the response
     // statistics, the rows before it here; the whole record's merges the two at the end.
     // Summing the window's rows twice was 23.5 M instructions, ~2.5 % of the drilling
@@ -559,7 +555,7 @@ void Recorder::write_response_statistics(Channel& channel) {
     for (const stats::StatisticField& field : stats::statistic_fields())
       if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
   }
-  file_->set_record_attribute(channel.series, "statistics", names, values);
+  file_.set_record_attribute(channel.series, "statistics", names, values);
 }
 
 RunningStatistics Recorder::whole_record_statistics(const Channel& channel) {
@@ -584,33 +580,32 @@ void Recorder::finish() {
     add_block_statistics(false, block_samples_, window_first_row_);
     block_samples_ = 0;
   }
-  if (!file_) return;
   for (Channel& channel : channels_) {
     const RunningStatistics whole = whole_record_statistics(channel);
-    file_->set_attribute(channel.series, "minimum", whole.minimum());
-    file_->set_attribute(channel.series, "maximum", whole.maximum());
-    file_->set_attribute(channel.series, "mean", whole.mean());
-    file_->set_attribute(channel.series, "standard_deviation", whole.standard_deviation());
+    file_.set_attribute(channel.series, "minimum", whole.minimum());
+    file_.set_attribute(channel.series, "maximum", whole.maximum());
+    file_.set_attribute(channel.series, "mean", whole.mean());
+    file_.set_attribute(channel.series, "standard_deviation", whole.standard_deviation());
     write_response_statistics(channel);
   }
-  file_->set_attribute("/", "statistics_window_start", evaluate_after());
-  file_->set_attribute("/summary", "samples", samples_);
+  file_.set_attribute("/", "statistics_window_start", evaluate_after());
+  file_.set_attribute("/summary", "samples", samples_);
   // The same number under the name of what it is: a drift only where energy is conserved.
   if (records_energy_)
-    file_->set_attribute("/summary", energy_is_conserved_ ? "relative_energy_drift" : "relative_energy_change",
+    file_.set_attribute("/summary", energy_is_conserved_ ? "relative_energy_drift" : "relative_energy_change",
                          energy_drift_);
-  compensators_.write(*file_);
+  compensators_.write(file_);
   for (const JointLoad& load : joint_loads_) {
-    file_->set_attribute("/summary", "peak_reaction_force_" + load.joint, load.peak);
+    file_.set_attribute("/summary", "peak_reaction_force_" + load.joint, load.peak);
     if (load.window.count() == 0) continue;
     const std::string prefix = "reaction_force_" + load.joint;
-    file_->set_attribute("/summary", prefix + "_mean_N", load.window.mean()[0]);
-    file_->set_attribute("/summary", prefix + "_std_N", load.window.standard_deviation()[0]);
-    file_->set_attribute("/summary", prefix + "_min_N", load.window.minimum()[0]);
-    file_->set_attribute("/summary", prefix + "_max_N", load.window.maximum()[0]);
+    file_.set_attribute("/summary", prefix + "_mean_N", load.window.mean()[0]);
+    file_.set_attribute("/summary", prefix + "_std_N", load.window.standard_deviation()[0]);
+    file_.set_attribute("/summary", prefix + "_min_N", load.window.minimum()[0]);
+    file_.set_attribute("/summary", prefix + "_max_N", load.window.maximum()[0]);
   }
-  if (!joint_loads_.empty()) file_->set_attribute("/summary", "reaction_window_start_s", evaluate_after());
-  file_->flush();
+  if (!joint_loads_.empty()) file_.set_attribute("/summary", "reaction_window_start_s", evaluate_after());
+  file_.flush();
 }
 
 }  // namespace heavesim

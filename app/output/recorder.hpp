@@ -30,8 +30,8 @@ class Recorder {
     std::string description;
     std::function<double()> value;
   };
-  /// `file` and `csv` may be null (not written).
-  Recorder(const CaseDefinition& definition, Scene& scene, ResultFile* file, CsvWriter* csv,
+  /// `csv` may be null (not written). The recorder's channels are the file's series.
+  Recorder(const CaseDefinition& definition, Scene& scene, ResultFile& file, CsvWriter* csv,
            const std::vector<ExtraChannel>& extra_channels = {});
 
   /// Evaluates the scene at (t, y) and records one sample of every channel; after
@@ -98,6 +98,8 @@ class Recorder {
     std::string units;
     std::string description;
     std::vector<std::string> labels;  // CSV column suffixes
+    /// Writes the channel's max(columns, 1) values of a sample; add() moves it to fills_.
+    /// Empty for a channel written with others (a force element's outputs).
     std::function<void(double t, double* out)> fill;
     int series = -1;
     /// Over the samples before the evaluation window: with the window's moments
@@ -108,10 +110,16 @@ class Recorder {
     std::vector<stats::ResponseStatisticsAccumulator> response = {};
     /// Per column, the unit of the CSV header ("[m]"); default: `units` for every column.
     std::vector<std::string> column_units = {};
-    /// Without a result file: the block of samples the channel is written to, and the
-    /// last whole one (they trade places, as the file's do).
-    std::vector<double> own_block = {};
-    std::vector<double> own_last_block = {};
+    /// Where its values lie in a sample's row [values] (the result file's staged sample):
+    /// the channels' rows side by side, in the order added.
+    long row_offset = 0;
+  };
+  /// A function that writes a sample's values into the row at `row_offset`: one channel's
+  /// (its fill), in add()'s order. One indirect call a channel and sample: a force
+  /// element's outputs go straight into the row instead (element_row_offsets_).
+  struct Fill {
+    std::function<void(double t, double* out)> write;
+    long row_offset;
   };
   void add(Channel channel);
   /// The whole record's minimum, maximum, mean and standard deviation of every column:
@@ -156,12 +164,14 @@ class Recorder {
   bool evaluates_beside() const { return !batches_[0].states.empty(); }
 
   Scene& scene_;
-  ResultFile* file_;
+  ResultFile& file_;
   CsvWriter* csv_;
   std::vector<Channel> channels_;
+  std::vector<Fill> fills_;
+  long row_width_ = 0;          // values in a sample's row: every channel's, side by side
   bool needs_reactions_ = false;
   bool records_energy_ = false;  // output.energy: the energy channels and the drift summary
-  std::vector<double> csv_row_;
+  std::vector<double> csv_row_;  // the sample's row, kept for the CSV past end_sample()
   long block_samples_ = 0;     // samples of the current block, not yet in the statistics
   long window_first_row_ = -1;  // the block's first sample in the evaluation window (-1: none)
   stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
@@ -180,7 +190,9 @@ class Recorder {
   std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
   std::vector<JointReaction> reactions_;  // of reaction_joints_, at the sample being recorded
-  std::vector<std::vector<double>> element_values_;  // per force element, its outputs at this sample
+  /// Per force element: where its outputs (one scalar channel each, side by side) lie in
+  /// a sample's row, which they are written into; -1 for an element without channels.
+  std::vector<long> element_row_offsets_;
   CompensatorSummary compensators_;
   // The last whole block's statistics, computed on a second thread while the next block's
   // samples are recorded (docs/performance.md, "Recording on two cores"). While it runs it

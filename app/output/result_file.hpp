@@ -103,9 +103,12 @@ class ResultFile {
   /// (staged_rows samples, one row of every series a sample) and go to the series'
   /// blocks a run of samples at a time: a sample's ~100 rows, each in its own block, were
   /// as many scattered stores into memory no cache holds (docs/performance.md).
-  double* sample_row(int series) {
-    return staging_.data() + staged_samples_ * staging_width_ + series_[series].staging_offset;
-  }
+  double* sample_row(int series) { return sample_row() + series_[series].staging_offset; }
+  /// The sample being built, every series' row side by side in the order they were added
+  /// (staging_offset(series) values in): a writer of every series fills it at once.
+  double* sample_row() { return staging_.data() + staged_samples_ * staging_width_; }
+  /// Where the series' row lies in sample_row() [values].
+  hsize_t staging_offset(int series) const { return series_[series].staging_offset; }
   /// The series' block of samples being built, row after row: the rows of the samples
   /// buffered (buffered_samples()). Moves the staged rows into the blocks first.
   const double* block(int series) {

@@ -109,7 +109,7 @@ int equilibrium_command(const EquilibriumOptions& options) {
     ResultFile file(output_path, 1);
     write_result_metadata(file, definition);
     write_constraint_summary(file, scene);
-    Recorder recorder(definition, scene, &file, nullptr);
+    Recorder recorder(definition, scene, file, nullptr);
     recorder.record(t, scene.initial_state);
     recorder.finish();
     const EquilibriumResult& result = *scene.equilibrium;

@@ -134,7 +134,7 @@ int kinematics_command(const RunOptions& options) {
     create_parent_directory(csv_path, "CSV file");
     csv.emplace(csv_path);
   }
-  Recorder recorder(definition, scene, &file, csv ? &*csv : nullptr, channels);
+  Recorder recorder(definition, scene, file, csv ? &*csv : nullptr, channels);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
   ProgressLine progress(solver.t_start, solver.t_end, !options.quiet);
 

@@ -84,7 +84,7 @@ int run_command(const RunOptions& options) {
   }
   case_tree.reset();
   Recorder recorder(recording_definition ? *recording_definition : definition,
-                    recording_scene ? *recording_scene : scene, &file, csv ? &*csv : nullptr);
+                    recording_scene ? *recording_scene : scene, file, csv ? &*csv : nullptr);
   if (recording_scene) recorder.evaluate_on_second_thread();
   std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator, *scene.system);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);

@@ -9,13 +9,17 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
 
+#include "app/case/case_definition.hpp"
+#include "app/output/recorder.hpp"
 #include "app/output/result_file.hpp"
+#include "app/scene/scene.hpp"
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -88,6 +92,83 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
   EXPECT_GT(checked, 20);
   std::filesystem::remove(output);
   std::filesystem::remove_all(csv_directory);
+}
+
+// The recorder writes a sample's values side by side into the file's staged row, a force
+// element's outputs straight from outputs(). Checked against the elements' own outputs on a
+// second build of the scene, evaluated apart at the same states, and the CSV column for
+// column against the file (%.17g reads back to the same double).
+TEST(ResultFile, ElementChannelsHoldTheElementsOutputsAndTheCsvTheFilesNumbers) {
+  const CaseDefinition definition = load_case(testing::source_path("cases/drilling.yaml"), {"solver.t_end=1", "output.evaluate_after=0"});
+  Scene scene = build_scene(definition);
+  Scene reference = build_scene(definition);
+  // Three states: the initial one, then scaled by 1 + 1e-3 k (the joints normalize quaternions).
+  std::vector<double> times = {0.0, 0.3, 0.7};
+  std::vector<VectorX> states;
+  for (int k = 0; k < 3; ++k) states.push_back(scene.initial_state * (1.0 + 1e-3 * k));
+  const std::string output = temporary("element_channels.h5"), csv_path = temporary("element_channels.csv");
+  {
+    ResultFile file(output, times.size());
+    CsvWriter csv(csv_path);
+    Recorder recorder(definition, scene, file, &csv);
+    ASSERT_TRUE(recorder.needs_reactions());
+    for (std::size_t k = 0; k < times.size(); ++k) recorder.record(times[k], states[k]);
+    recorder.finish();
+    file.mark_complete();
+    file.close();
+    csv.close();
+  }
+  H5File file(output);
+  ASSERT_TRUE(file.ok());
+  MultibodySystem& system = *reference.system;
+  int element_channels = 0;
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    system.evaluate(times[k], states[k], true);
+    for (std::size_t e = 0; e < system.force_elements().size(); ++e) {
+      const ForceElement& element = *system.force_elements()[e];
+      std::vector<double> values(element.channels().size());
+      element.outputs(times[k], system.model(), system.data(),
+                      states[k].segment(system.state_offset(e), element.state_size()), values);
+      for (std::size_t c = 0; c < values.size(); ++c) {
+        const std::string dataset = "/forces/" + element.name() + "/" + element.channels()[c].name;
+        ASSERT_TRUE(file.exists(dataset)) << dataset;
+        EXPECT_EQ(file.read(dataset).at(k), values[c]) << dataset << " at t = " << times[k];
+        ++element_channels;
+      }
+    }
+  }
+  EXPECT_GT(element_channels, 3 * 40);  // the rig's compensators and hydrodynamic loads
+
+  std::ifstream csv(csv_path);
+  std::string header;
+  std::getline(csv, header);
+  std::vector<std::string> datasets;  // per CSV column
+  std::stringstream fields(header);
+  for (std::string field; std::getline(fields, field, ',');)
+    datasets.push_back("/" + field.substr(0, field.find_first_of(".[ ")));
+  std::map<std::string, std::vector<double>> series;
+  for (const std::string& dataset : datasets)
+    if (!series.count(dataset)) series[dataset] = file.read(dataset);
+  std::size_t row = 0;
+  for (std::string line; std::getline(csv, line); ++row) {
+    std::stringstream values(line);
+    std::size_t column = 0;
+    std::string previous;
+    int column_of_dataset = 0;
+    for (std::string value; std::getline(values, value, ','); ++column) {
+      ASSERT_LT(column, datasets.size());
+      column_of_dataset = datasets[column] == previous ? column_of_dataset + 1 : 0;
+      previous = datasets[column];
+      const std::vector<double>& numbers = series.at(datasets[column]);
+      const std::size_t width = numbers.size() / times.size();
+      EXPECT_EQ(std::strtod(value.c_str(), nullptr), numbers.at(row * width + column_of_dataset))
+          << datasets[column] << " column " << column_of_dataset << " row " << row;
+    }
+    EXPECT_EQ(column, datasets.size());
+  }
+  EXPECT_EQ(row, times.size());
+  std::filesystem::remove(output);
+  std::filesystem::remove(csv_path);
 }
 
 TEST(ResultFile, SignalStopsTheRunAndLeavesAReadableIncompleteFile) {
