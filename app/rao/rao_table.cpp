@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "app/output/csv_cell.hpp"
 #include "app/output/output_error.hpp"
 #include "app/output/table_file.hpp"
 #include "app/version.hpp"
@@ -16,7 +17,7 @@
 namespace heavesim {
 namespace {
 
-constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr double no_phase = std::numeric_limits<double>::quiet_NaN();  // of a non-finite value
 
 std::vector<double> amplitudes(const std::vector<std::complex<double>>& values) {
   std::vector<double> out;
@@ -27,18 +28,12 @@ std::vector<double> amplitudes(const std::vector<std::complex<double>>& values) 
 /// arg in degrees, (-180, 180].
 std::vector<double> phases(const std::vector<std::complex<double>>& values) {
   std::vector<double> out;
-  for (const std::complex<double>& v : values) out.push_back(std::isfinite(std::abs(v)) ? std::arg(v) * 180.0 / M_PI : nan);
+  for (const std::complex<double>& v : values) out.push_back(std::isfinite(std::abs(v)) ? std::arg(v) * 180.0 / M_PI : no_phase);
   return out;
 }
 
-std::string csv_number(double value) { return std::isfinite(value) ? fmt::format("{:.10g}", value) : ""; }
-
-std::string csv_text(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
+/// A number of the RAO table: ten significant digits, empty where it is not finite.
+std::string csv_ten_digits(double value) { return std::isfinite(value) ? fmt::format("{:.10g}", value) : ""; }
 
 }  // namespace
 
@@ -106,12 +101,12 @@ void write_rao_table(const std::string& directory, const RaoTable& table) {
   }
   csv << "\n";
   for (std::size_t r = 0; r < rows; ++r) {
-    csv << csv_number(periods[r]) << "," << csv_number(table.angular_frequencies[r]);
+    csv << csv_ten_digits(periods[r]) << "," << csv_ten_digits(table.angular_frequencies[r]);
     for (const RaoColumn& c : table.columns) {
-      csv << "," << csv_number(std::abs(c.values[r])) << "," << csv_number(phases({c.values[r]})[0]);
-      if (!c.coherence.empty()) csv << "," << csv_number(c.coherence[r]);
+      csv << "," << csv_ten_digits(std::abs(c.values[r])) << "," << csv_ten_digits(phases({c.values[r]})[0]);
+      if (!c.coherence.empty()) csv << "," << csv_ten_digits(c.coherence[r]);
       if (!c.reference.empty())
-        csv << "," << csv_number(std::abs(c.reference[r])) << "," << csv_number(phases({c.reference[r]})[0]);
+        csv << "," << csv_ten_digits(std::abs(c.reference[r])) << "," << csv_ten_digits(phases({c.reference[r]})[0]);
     }
     csv << "\n";
   }

@@ -13,6 +13,7 @@
 
 #include <fmt/format.h>
 
+#include "app/output/csv_cell.hpp"
 #include "app/output/output_error.hpp"
 #include "app/output/table_file.hpp"
 #include "app/output/utc_now.hpp"
@@ -60,14 +61,6 @@ std::vector<StatisticColumn> statistic_columns(const SweepDefinition& sweep, con
       table.push_back(std::move(column));
     }
   return table;
-}
-
-/// A CSV cell: quoted when it holds a comma, a quote or a line break.
-std::string csv_text(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 std::string csv_number(double value) { return std::isnan(value) ? "" : fmt::format("{:.17g}", value); }
