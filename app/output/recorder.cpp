@@ -504,6 +504,9 @@ void Recorder::require_file_block_agrees() const {
   // block being built would not be the samples the recorder counts.
   if (file_.buffered_samples() != static_cast<hsize_t>(block_samples_))
     throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
+  // A series added to the file after the recorder's would keep stale staged values.
+  if (file_.staging_width() != static_cast<hsize_t>(row_width_))
+    throw std::logic_error("Recorder: the result file holds series other than the recorder's");
 }
 
 void Recorder::hand_over_block() {

@@ -130,7 +130,8 @@ class Recorder {
   void add_block_statistics(bool last_whole_block, long rows, long window_first_row);
   /// The whole block just ended goes to the block worker; the next block starts.
   void hand_over_block();
-  /// Throws std::logic_error unless the result file's block holds the recorder's count.
+  /// Throws std::logic_error unless the result file's block holds the recorder's count and its
+  /// staged row is the recorder's row (no series but the recorder's).
   void require_file_block_agrees() const;
   /// The evaluation window's statistics of every column of `channel` as its attributes.
   void write_response_statistics(Channel& channel);

@@ -97,18 +97,19 @@ class ResultFile {
   /// Returns its id for append(); `units` and `description` become attributes.
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
-  /// The series' row of the sample being built (max(columns, 1) values), sized once: a
-  /// writer fills it in place (the recorder's channels do), then calls end_sample().
-  /// Valid until the next end_sample(), flush() or block(). The rows of a sample lie side by side
-  /// (staged_rows samples, one row of every series a sample) and go to the series'
-  /// blocks a run of samples at a time: a sample's ~100 rows, each in its own block, were
-  /// as many scattered stores into memory no cache holds (docs/performance.md).
-  double* sample_row(int series) { return sample_row() + series_[series].staging_offset; }
-  /// The sample being built, every series' row side by side in the order they were added
-  /// (staging_offset(series) values in): a writer of every series fills it at once.
+  /// The sample being built, sized once: every series' row (max(columns, 1) values) side
+  /// by side in the order the series were added, staging_offset(series) values in. A
+  /// writer fills it in place (the recorder fills the whole row), then calls end_sample().
+  /// Valid until the next end_sample(), flush() or block(). The samples are staged
+  /// (staged_rows of them) and go to the series' blocks a run of samples at a time: a
+  /// sample's ~100 rows, each in its own block, were as many scattered stores into memory
+  /// no cache holds (docs/performance.md).
   double* sample_row() { return staging_.data() + staged_samples_ * staging_width_; }
-  /// Where the series' row lies in sample_row() [values].
+  /// The series' row of the sample being built (as sample_row()).
+  double* sample_row(int series) { return sample_row() + series_[series].staging_offset; }
+  /// Where the series' row lies in sample_row() [values], and the whole row's width.
   hsize_t staging_offset(int series) const { return series_[series].staging_offset; }
+  hsize_t staging_width() const { return staging_width_; }
   /// The series' block of samples being built, row after row: the rows of the samples
   /// buffered (buffered_samples()). Moves the staged rows into the blocks first.
   const double* block(int series) {

@@ -89,7 +89,8 @@ class ForceElement {
     return none;
   }
   /// Values of channels() at time t for state z, on the stages in Data (as apply()
-  /// sees them); values.size() == channels().size(). Must not allocate.
+  /// sees them); values.size() == channels().size(). Must write every value (the
+  /// recorder records one left unwritten as NaN) and not allocate.
   virtual void outputs(double /*t*/, const Model& /*model*/, const Data& /*data*/, Eigen::Ref<const VectorX> /*z*/,
                        std::span<double> /*values*/) const {}
 };
