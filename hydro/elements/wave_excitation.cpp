@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "hydro/excitation/excitation_interpolation.hpp"
 #include "kernel/math/cpu_dispatch.hpp"
@@ -15,7 +16,7 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
   const auto& components = waves_.components();
   const Eigen::Index n = static_cast<Eigen::Index>(components.size());
   angular_frequencies_.resize(n);
-  weights_.resize(2 * n, 7);
+  weights_.setZero(2 * n, 8);
   phasors_.setZero(2 * n);
   for (Eigen::ArrayXd* a : {&grid_cosines_, &grid_sines_, &scratch_cosines_}) a->setZero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
@@ -25,8 +26,9 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
     const std::complex<double> wave = c.amplitude * std::polar(1.0, phase);  // a_j e^{i phi'_j}
     const ComplexVector6 amplitude = interpolate_excitation(excitation, c.angular_frequency, c.heading) * wave;
     angular_frequencies_[j] = c.angular_frequency;
-    weights_.row(j) << amplitude.real().transpose(), wave.real();  // Re[W e^{i w t}] = Re W cos w t - Im W sin w t
-    weights_.row(n + j) << -amplitude.imag().transpose(), -wave.imag();
+    // Re[W e^{i w t}] = Re W cos w t - Im W sin w t
+    weights_.row(j).head<7>() << amplitude.real().transpose(), wave.real();
+    weights_.row(n + j).head<7>() << -amplitude.imag().transpose(), -wave.imag();
   }
   // The grid: D w_max <= 1/4.
   const double highest = n > 0 ? angular_frequencies_.cwiseAbs().maxCoeff() : 0.0;
@@ -87,6 +89,29 @@ HEAVESIM_CLONED_FOR_AVX2 void WaveExcitation::update_phasors(double t) const {
   }
 }
 
+// The sums a phasor at a time: the eight running sums are two vectors of four doubles (GCC's
+// and Clang's vector extensions: one AVX2 register each, a fused multiply-add each a phasor
+// in the x86-64-v3 clone, two SSE2 registers each elsewhere), each sum adding its terms in
+// phasor order. Left to itself the compiler vectorized across phasors with transposes;
+// Eigen's product of the transposed (2N x 7) weights ran on two doubles a vector: 10 % of
+// the 3-hour H1 run's instructions (docs/performance.md, "Issue #18, thirteenth round").
+HEAVESIM_CLONED_FOR_AVX2 void WaveExcitation::weighted_phasor_sums(double* sums) const {
+  using FourDoubles = double __attribute__((vector_size(4 * sizeof(double))));
+  FourDoubles first = {0.0, 0.0, 0.0, 0.0}, second = {0.0, 0.0, 0.0, 0.0};
+  const double* row = weights_.data();
+  const double* phasor = phasors_.data();
+  const Eigen::Index count = phasors_.size();
+  for (Eigen::Index j = 0; j < count; ++j, row += 8) {
+    FourDoubles low, high;
+    std::memcpy(&low, row, sizeof low);  // unaligned loads
+    std::memcpy(&high, row + 4, sizeof high);
+    first += low * phasor[j];
+    second += high * phasor[j];
+  }
+  std::memcpy(sums, &first, sizeof first);
+  std::memcpy(sums + 4, &second, sizeof second);
+}
+
 const WaveExcitation::Vector7& WaveExcitation::evaluate(double t) const {
   if (t == cached_time_) return cached_value_;
   const double ramp = waves_.ramp()(t);
@@ -94,7 +119,9 @@ const WaveExcitation::Vector7& WaveExcitation::evaluate(double t) const {
     cached_value_.setZero();
   } else {
     update_phasors(t);
-    cached_value_.noalias() = ramp * (weights_.transpose() * phasors_);
+    double sums[8];
+    weighted_phasor_sums(sums);
+    cached_value_ = ramp * Eigen::Map<const Vector7>(sums);
   }
   cached_time_ = t;
   return cached_value_;

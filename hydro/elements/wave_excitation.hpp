@@ -56,13 +56,17 @@ class WaveExcitation : public ForceElement {
   const Vector7& evaluate(double t) const;
   /// Sets the phasors to e^{i w_j t}.
   void update_phasors(double t) const;
+  /// sums = W^T p over the phasors p (eight values, the last zero).
+  void weighted_phasor_sums(double* sums) const;
 
   std::string name_;
   int link_;
   WaveTrain waves_;
   Eigen::Vector2d mean_position_;
   Eigen::VectorXd angular_frequencies_;                 // w_j [rad/s]
-  Eigen::Matrix<double, Eigen::Dynamic, 7> weights_;   // W: N/m, N m/m; column 6: m
+  /// W, a row per phasor: N/m, N m/m; column 6: m; column 7: zero (a row of eight
+  /// doubles is two AVX2 vectors, weighted_phasor_sums()).
+  Eigen::Matrix<double, Eigen::Dynamic, 8, Eigen::RowMajor> weights_;
   /// Moves the grid phasors to cell k.
   void move_grid(long k) const;
   double grid_step_ = 0.0;                              // D [s]
