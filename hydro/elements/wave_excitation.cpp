@@ -18,7 +18,7 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
   angular_frequencies_.resize(n);
   weights_.setZero(2 * n, 8);
   phasors_.setZero(2 * n);
-  for (Eigen::ArrayXd* a : {&grid_cosines_, &grid_sines_, &scratch_cosines_}) a->setZero(n);
+  for (Eigen::ArrayXd* a : {&grid_cosines_, &grid_sines_}) a->setZero(n);
   for (Eigen::Index j = 0; j < n; ++j) {
     const WaveComponent& c = components[j];
     const double phase = c.phase - c.wave_number * (mean_position.x() * std::cos(c.heading) +
@@ -39,7 +39,7 @@ WaveExcitation::WaveExcitation(std::string name, int link, const ExcitationData&
                {"excitation_force_z", "N", "wave excitation force, world z"}};
 }
 
-void WaveExcitation::move_grid(long k) const {
+HEAVESIM_CLONED_FOR_AVX2 void WaveExcitation::move_grid(long k) const {
   // Cell k's phasors are always the same product: the block's first cell a = 32 floor(k / 32)
   // from t_a directly, then k - a rotations by e^{i w D} in turn. A step to the next cell is
   // one more rotation; any other move (back, a jump, a new block) starts again from the
@@ -57,11 +57,19 @@ void WaveExcitation::move_grid(long k) const {
                                    angular_frequencies_.size());
     from = first;
   }
-  for (; from < k; ++from) {  // (c + i s)(rc + i rs)
-    scratch_cosines_ = grid_cosines_ * cell_cosines_ - grid_sines_ * cell_sines_;
-    grid_sines_ = grid_cosines_ * cell_sines_ + grid_sines_ * cell_cosines_;
-    grid_cosines_ = scratch_cosines_;
-  }
+  // One rotation a pass, a plain loop the compiler vectorizes (4 doubles a vector in the
+  // x86-64-v3 clone); Eigen's three array statements a rotation were 3.5 % of the H1 run.
+  const Eigen::Index n = angular_frequencies_.size();
+  double* __restrict cosines = grid_cosines_.data();
+  double* __restrict sines = grid_sines_.data();
+  const double* cell_c = cell_cosines_.data();
+  const double* cell_s = cell_sines_.data();
+  for (; from < k; ++from)
+    for (Eigen::Index j = 0; j < n; ++j) {  // (c + i s)(rc + i rs)
+      const double cosine = cosines[j] * cell_c[j] - sines[j] * cell_s[j];
+      sines[j] = cosines[j] * cell_s[j] + sines[j] * cell_c[j];
+      cosines[j] = cosine;
+    }
   grid_cell_ = k;
 }
 

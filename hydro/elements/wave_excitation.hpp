@@ -73,7 +73,6 @@ class WaveExcitation : public ForceElement {
   Eigen::ArrayXd cell_cosines_, cell_sines_;            // e^{i w_j D}
   mutable Eigen::ArrayXd grid_cosines_, grid_sines_;    // e^{i w_j t_k}
   mutable long grid_cell_ = std::numeric_limits<long>::min();  // k (none yet)
-  mutable Eigen::ArrayXd scratch_cosines_;                     // workspace of move_grid, size N
   mutable Eigen::VectorXd phasors_;                     // [cos w_j t; sin w_j t]
   mutable double cached_time_ = std::numeric_limits<double>::quiet_NaN();
   mutable Vector7 cached_value_ = Vector7::Zero();

@@ -146,6 +146,18 @@ Force row_direction_rate(const ConstraintRow& row, const FrameState& f) {
   return Force::Zero();
 }
 
+/// The nearest link above (or at) both `a` and `b`, 0 for the ground: links are numbered
+/// depth first, so a parent's index is below its children's and the larger index steps up.
+int nearest_common_ancestor(const Model& model, int a, int b) {
+  while (a != b) {
+    if (a > b)
+      a = model.joints[a].parent;
+    else
+      b = model.joints[b].parent;
+  }
+  return a;
+}
+
 /// Spatial acceleration of a link when qdd = 0: the sum of velocity-product terms c_i
 /// along its path to the ground.
 Motion acceleration_without_qdd(const Model& model, const Data& data, int link) {
@@ -272,15 +284,18 @@ void constraint_jacobian(const Model& model, const Data& data, double t, Eigen::
       continue;
     }
     const FrameState frames = frame_state(data, constraint);
+    // J_row = G . (J_b - J_a): columns of the joints above b count +, above a count -. The
+    // joints above both (from their nearest common ancestor up: a floating platform's six
+    // columns under a loop on the rig) move the two frames alike and would be added and
+    // taken away again, d - d = 0 exactly: the paths stop there (the zeros stand).
+    const int common = nearest_common_ancestor(model, constraint.link_a, constraint.link_b);
     for (std::size_t k = 0; k < constraint.rows.size(); ++k) {
       const Force G = row_direction(constraint.rows[k], frames);
       auto row = jacobian.row(constraint.first_row + static_cast<int>(k));
-      // J_row = G . (J_b - J_a): columns of the joints above b count +, above a count -
-      // (common ancestors cancel).
-      for (int i = constraint.link_b; i > 0; i = model.joints[i].parent)
+      for (int i = constraint.link_b; i != common; i = model.joints[i].parent)
         for (int c = 0; c < model.joints[i].nv; ++c)
           row[model.joints[i].v_index + c] += dot(data.motion_subspace_world.col(model.joints[i].v_index + c), G);
-      for (int i = constraint.link_a; i > 0; i = model.joints[i].parent)
+      for (int i = constraint.link_a; i != common; i = model.joints[i].parent)
         for (int c = 0; c < model.joints[i].nv; ++c)
           row[model.joints[i].v_index + c] -= dot(data.motion_subspace_world.col(model.joints[i].v_index + c), G);
     }
