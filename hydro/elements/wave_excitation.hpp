@@ -9,8 +9,9 @@
 // Evaluation (the hot path of a sea-state run: 200 components at every right-hand side):
 // with the phasors c_j + i s_j = e^{i w_j t},
 //   [F; eta(x0, y0)] = R(t) W^T [c; s],  W = [Re[X_j a_j e^{i phi'_j}]; -Im[...]] (2N x 7),
-// seven dot products of length 2N over contiguous memory (6 load components and the
-// elevation at the mean position share the phasors). F depends on t only, so
+// stored a row of eight per phasor (row-major 2N x 8, the last column zero): the seven
+// sums gather a row a phasor (6 load components and the elevation at the mean position
+// share the phasors; weighted_phasor_sums()). F depends on t only, so
 //  * the last evaluation is kept and reused at the same t (a fixed-step Runge-Kutta
 //    evaluates the midpoint twice and the end of a step again at the start of the next;
 //    the recorder asks at the output time);

@@ -287,7 +287,8 @@ void constraint_jacobian(const Model& model, const Data& data, double t, Eigen::
     // J_row = G . (J_b - J_a): columns of the joints above b count +, above a count -. The
     // joints above both (from their nearest common ancestor up: a floating platform's six
     // columns under a loop on the rig) move the two frames alike and would be added and
-    // taken away again, d - d = 0 exactly: the paths stop there (the zeros stand).
+    // taken away again, d - d = 0 exactly for a finite d: the paths stop there (the zeros
+    // stand; a NaN or infinite d made NaN there before, and makes it elsewhere in the row now).
     const int common = nearest_common_ancestor(model, constraint.link_a, constraint.link_b);
     for (std::size_t k = 0; k < constraint.rows.size(); ++k) {
       const Force G = row_direction(constraint.rows[k], frames);
