@@ -157,10 +157,9 @@ void Recorder::add(Channel channel) {
   channel.row_offset = row_width_;
   row_width_ += width;
   if (channel.fill) fills_.push_back({std::move(channel.fill), channel.row_offset});
+  // The recorder's row is the file's staged sample: the file holds its series only
+  // (require_file_block_agrees checks the widths at every sample).
   channel.series = file_.add_series(channel.path, channel.columns, channel.units, channel.description);
-  // The recorder's row is the file's staged sample: the file holds its series only.
-  if (file_.staging_offset(channel.series) != static_cast<hsize_t>(channel.row_offset))
-    throw std::logic_error("Recorder: the result file holds series other than the recorder's: " + channel.path);
   // The statistics exist from the start, NaN until finish() overwrites them in place
   // (after the layout is published, a series' object header must not grow:
   // app/output/result_file.hpp).
@@ -504,7 +503,8 @@ void Recorder::require_file_block_agrees() const {
   // block being built would not be the samples the recorder counts.
   if (file_.buffered_samples() != static_cast<hsize_t>(block_samples_))
     throw std::logic_error("Recorder: the result file's block and the recorder's disagree");
-  // A series added to the file after the recorder's would keep stale staged values.
+  // A series of the file's not the recorder's (before, among or after its own) would
+  // shift the channels' offsets or keep stale staged values.
   if (file_.staging_width() != static_cast<hsize_t>(row_width_))
     throw std::logic_error("Recorder: the result file holds series other than the recorder's");
 }

@@ -98,8 +98,8 @@ class ResultFile {
   int add_series(const std::string& dataset_path, int columns, const std::string& units,
                  const std::string& description);
   /// The sample being built, sized once: every series' row (max(columns, 1) values) side
-  /// by side in the order the series were added, staging_offset(series) values in. A
-  /// writer fills it in place (the recorder fills the whole row), then calls end_sample().
+  /// by side in the order the series were added. A writer fills it in place (the recorder
+  /// fills the whole row), then calls end_sample().
   /// Valid until the next end_sample(), flush() or block(). The samples are staged
   /// (staged_rows of them) and go to the series' blocks a run of samples at a time: a
   /// sample's ~100 rows, each in its own block, were as many scattered stores into memory
@@ -107,8 +107,7 @@ class ResultFile {
   double* sample_row() { return staging_.data() + staged_samples_ * staging_width_; }
   /// The series' row of the sample being built (as sample_row()).
   double* sample_row(int series) { return sample_row() + series_[series].staging_offset; }
-  /// Where the series' row lies in sample_row() [values], and the whole row's width.
-  hsize_t staging_offset(int series) const { return series_[series].staging_offset; }
+  /// The whole row's width [values].
   hsize_t staging_width() const { return staging_width_; }
   /// The series' block of samples being built, row after row: the rows of the samples
   /// buffered (buffered_samples()). Moves the staged rows into the blocks first.
