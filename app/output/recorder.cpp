@@ -16,6 +16,7 @@
 #include "kernel/algorithms/joint_reactions.hpp"
 #include "kernel/algorithms/constraint_equations.hpp"
 #include "kernel/integrators/integrator.hpp"
+#include "kernel/math/two_thread_loop.hpp"
 #include "signal/statistic_fields.hpp"
 
 namespace heavesim {
@@ -520,18 +521,21 @@ void Recorder::add_block_statistics(bool last_whole_block, long rows, long windo
   // Column by column over a block instead of channel by channel every sample: the
   // recording's share of the drilling run (docs/performance.md). The rows are where the
   // channels wrote them, in the file's blocks.
-  for (Channel& channel : channels_) {
-    const long width = std::max(channel.columns, 1);
-    const double* block = last_whole_block ? file_.last_block(channel.series) : file_.block(channel.series);
-    // Each sample's moments are taken once: the window's rows by the response
-    // statistics, the rows before it here; the whole record's merges the two at the end.
-    // Summing the window's rows twice was 23.5 M instructions, ~2.5 % of the drilling
-    // run's (docs/performance.md, "Issue #18, eleventh round").
-    channel.statistics.add_rows(block, window_first_row >= 0 ? window_first_row : rows);
-    if (window_first_row >= 0)
-      for (std::size_t c = 0; c < channel.response.size(); ++c)
-        channel.response[c].add(block + window_first_row * width + c, width, rows - window_first_row);
-  }
+  for (Channel& channel : channels_)
+    add_block_statistics(channel, last_whole_block ? file_.last_block(channel.series) : file_.block(channel.series),
+                         rows, window_first_row);
+}
+
+void Recorder::add_block_statistics(Channel& channel, const double* block, long rows, long window_first_row) {
+  const long width = std::max(channel.columns, 1);
+  // Each sample's moments are taken once: the window's rows by the response
+  // statistics, the rows before it here; the whole record's merges the two at the end.
+  // Summing the window's rows twice was 23.5 M instructions, ~2.5 % of the drilling
+  // run's (docs/performance.md, "Issue #18, eleventh round").
+  channel.statistics.add_rows(block, window_first_row >= 0 ? window_first_row : rows);
+  if (window_first_row >= 0)
+    for (std::size_t c = 0; c < channel.response.size(); ++c)
+      channel.response[c].add(block + window_first_row * width + c, width, rows - window_first_row);
 }
 
 std::vector<std::string> Recorder::statistic_names(const Channel& channel) {
@@ -547,18 +551,15 @@ bool Recorder::has_extreme_statistics(const Channel& channel) {
   return channel.columns == 0 || channel.path.find("/reaction_") != std::string::npos;
 }
 
-void Recorder::write_response_statistics(Channel& channel) {
-  // One compound attribute per channel (a record per column, a field per statistic): one
-  // HDF5 attribute write instead of ~40 keeps the end of a run short (docs/performance.md).
+std::vector<double> Recorder::response_statistic_values(Channel& channel) {
   const bool extremes = has_extreme_statistics(channel);
-  const std::vector<std::string> names = statistic_names(channel);
   std::vector<double> values;
   for (stats::ResponseStatisticsAccumulator& accumulator : channel.response) {
     const stats::ResponseStatistics column = accumulator.result();
     for (const stats::StatisticField& field : stats::statistic_fields())
       if (extremes || field.group == stats::FieldGroup::moments) values.push_back(field.value(column));
   }
-  file_.set_record_attribute(channel.series, "statistics", names, values);
+  return values;
 }
 
 RunningStatistics Recorder::whole_record_statistics(const Channel& channel) {
@@ -577,19 +578,31 @@ double Recorder::channel_maximum(const std::string& path) const {
 void Recorder::finish() {
   record_queued_samples();
   block_worker_.wait();
+  // The block being built, as far as it goes (the file holds the same samples), and then
+  // the window's statistics of every column, channel by channel on two threads: nothing
+  // else runs now, and the spectra, cycle counts and extreme-value fits were the end of
+  // the run's largest part (docs/performance.md, "Issue #18, fourteenth round").
+  std::vector<const double*> blocks(channels_.size(), nullptr);
   if (block_samples_ > 0) {
-    // The block being built, as far as it goes: the file holds the same samples.
     require_file_block_agrees();
-    add_block_statistics(false, block_samples_, window_first_row_);
-    block_samples_ = 0;
+    for (std::size_t c = 0; c < channels_.size(); ++c) blocks[c] = file_.block(channels_[c].series);  // moves the staged rows
   }
-  for (Channel& channel : channels_) {
+  std::vector<std::vector<double>> values(channels_.size());
+  for_each_index_on_two_threads(channels_.size(), [&](std::size_t c) {
+    if (blocks[c] != nullptr) add_block_statistics(channels_[c], blocks[c], block_samples_, window_first_row_);
+    values[c] = response_statistic_values(channels_[c]);
+  });
+  block_samples_ = 0;
+  for (std::size_t c = 0; c < channels_.size(); ++c) {
+    Channel& channel = channels_[c];
     const RunningStatistics whole = whole_record_statistics(channel);
     file_.set_attribute(channel.series, "minimum", whole.minimum());
     file_.set_attribute(channel.series, "maximum", whole.maximum());
     file_.set_attribute(channel.series, "mean", whole.mean());
     file_.set_attribute(channel.series, "standard_deviation", whole.standard_deviation());
-    write_response_statistics(channel);
+    // One compound attribute per channel (a record per column, a field per statistic): one
+    // HDF5 attribute write instead of ~40 keeps the end of a run short (docs/performance.md).
+    file_.set_record_attribute(channel.series, "statistics", statistic_names(channel), values[c]);
   }
   file_.set_attribute("/", "statistics_window_start", evaluate_after());
   file_.set_attribute("/summary", "samples", samples_);

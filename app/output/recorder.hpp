@@ -128,13 +128,19 @@ class Recorder {
   /// `rows` samples of a block into every channel's statistics: the last whole block
   /// (on the block worker's thread) or, at the end, the block being built.
   void add_block_statistics(bool last_whole_block, long rows, long window_first_row);
+  /// The same for one channel and its rows `block` (touches that channel only). Out of line
+  /// so that a profile sees every block's statistics under this one name
+  /// (scripts/instruction_share.py): the block worker's and the end of the run's.
+  [[gnu::noinline]] static void add_block_statistics(Channel& channel, const double* block, long rows,
+                                                     long window_first_row);
   /// The whole block just ended goes to the block worker; the next block starts.
   void hand_over_block();
   /// Throws std::logic_error unless the result file's block holds the recorder's count and its
   /// staged row is the recorder's row (no series but the recorder's).
   void require_file_block_agrees() const;
-  /// The evaluation window's statistics of every column of `channel` as its attributes.
-  void write_response_statistics(Channel& channel);
+  /// The evaluation window's statistics of every column of `channel`, column after column,
+  /// the fields of statistic_names() (touches that channel only).
+  static std::vector<double> response_statistic_values(Channel& channel);
   /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
   /// series but /time, and reactions) or the moments only.
   static bool has_extreme_statistics(const Channel& channel);

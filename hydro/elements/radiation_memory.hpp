@@ -4,7 +4,9 @@
 //   z_ij' = A_ij z_ij + B_ij v_j,   F_i = -sum_j C_ij z_ij,
 // v the body reference point's velocity in WAMIT order (world axes; the BEM reference
 // point is taken at the body frame origin). A(inf) belongs in the body's added
-// inertia (added_mass.hpp), not here. No allocation in apply()/state_derivative().
+// inertia (added_mass.hpp), not here. A realisation in modal form (A zero off its three
+// central diagonals, to_modal_form) is integrated by a banded product. No allocation in
+// apply()/state_derivative().
 #include "hydro/elements/body_motion.hpp"
 #include "hydro/radiation/state_space.hpp"
 
@@ -30,6 +32,10 @@ class RadiationMemory : public ForceElement {
   int link_;
   std::vector<ModePairStateSpace> systems_;
   std::vector<int> offsets_;
+  // State by state over the whole state: the three central diagonals of A and B of the
+  // systems in modal form (zero for a dense system's states), and C.
+  std::vector<double> lower_, diagonal_, upper_, input_, output_;
+  std::vector<int> dense_systems_;  // systems whose A has entries off its three central diagonals
   int state_size_ = 0;
 };
 

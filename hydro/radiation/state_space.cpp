@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include <Eigen/Dense>
@@ -18,6 +19,42 @@ void check_state_space_order(int order) {
   if (order < 2 || order > max_state_space_order)
     throw ParameterError("state_space_order", fmt::format("{}", order),
                          fmt::format("a state-space order in 2 .. {}", max_state_space_order));
+}
+
+namespace {
+
+// Above this condition number of the eigenvector basis the change of basis could lose
+// more than ~1e-10 of the kernel (the round-off of V^-1 B and C V grows as cond(V) eps).
+constexpr double largest_modal_condition = 1e6;
+
+}  // namespace
+
+bool to_modal_form(ModePairStateSpace& system) {
+  const Eigen::MatrixXd A = system.A;
+  const Eigen::EigenSolver<Eigen::MatrixXd> eigen(A);
+  if (eigen.info() != Eigen::Success) return false;
+  // A V = V D, D block diagonal: a 1 x 1 block per real eigenvalue, a 2 x 2 block
+  // [[a, b], [-b, a]] per pair a +- i b (Eigen's pseudo-eigendecomposition).
+  Eigen::MatrixXd V = eigen.pseudoEigenvectors();
+  const Eigen::MatrixXd D = eigen.pseudoEigenvalueMatrix();
+  // Each block's columns scaled to unit size together: a common factor keeps the
+  // block's form and takes the arbitrary lengths of the eigenvectors out of cond(V).
+  const Eigen::Index n = A.rows();
+  for (Eigen::Index k = 0; k < n;) {
+    const Eigen::Index width = k + 1 < n && D(k + 1, k) != 0.0 ? 2 : 1;
+    const double size = V.middleCols(k, width).norm();
+    if (!(size > 0.0)) return false;
+    V.middleCols(k, width) /= width == 2 ? size / std::numbers::sqrt2 : size;  // columns of length ~1
+    k += width;
+  }
+  const Eigen::JacobiSVD<Eigen::MatrixXd> singular(V);
+  const Eigen::VectorXd& sigma = singular.singularValues();
+  if (!(sigma[n - 1] > 0.0) || sigma[0] / sigma[n - 1] > largest_modal_condition) return false;
+  const Eigen::PartialPivLU<Eigen::MatrixXd> basis(V);
+  system.B = basis.solve(Eigen::VectorXd(system.B));
+  system.C = Eigen::RowVectorXd(system.C) * V;
+  system.A = D;
+  return true;
 }
 
 ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, int j, int order, int max_hankel_size) {
@@ -85,6 +122,7 @@ ModePairStateSpace realize_kernel_entry(const RetardationKernel& kernel, int i, 
   }
   system.A = A;
   system.stable = (Eigen::MatrixXd(system.A).eigenvalues().real().array() < 0.0).all();
+  to_modal_form(system);
   // Fit quality on the full-rate samples.
   double mean = 0.0;
   for (const Matrix6& K : kernel.values) mean += K(i, j);

@@ -38,9 +38,10 @@ TEST(NoMallocHydro, ForceElementsDoNotAllocate) {
   heave.A = StateMatrix::Identity(4, 4) * -0.5;
   heave.B = StateVector::Ones(4);
   heave.C = StateRowVector::Ones(4) * 1e4;
-  ModePairStateSpace pitch_surge = heave;
+  ModePairStateSpace pitch_surge = heave;  // a dense A (heave's is diagonal): both products of state_derivative
   pitch_surge.force_mode = 4;
   pitch_surge.velocity_mode = 0;
+  pitch_surge.A = StateMatrix::Constant(4, 4, 0.1) - StateMatrix::Identity(4, 4);
   system.add_force_element(std::make_unique<RadiationMemory>("radiation", link, std::vector{heave, pitch_surge}));
   RetardationKernel kernel{0.1, std::vector<Matrix6>(200, Matrix6::Identity() * 1e3)};
   system.add_force_element(std::make_unique<RadiationConvolution>("convolution", link, kernel));

@@ -5,9 +5,18 @@
 
 #include <cmath>
 
+#include <complex>
+#include <random>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
 #include "io/bem/wamit_reader.hpp"
+#include "hydro/elements/body_motion.hpp"
+#include "hydro/elements/radiation_memory.hpp"
 #include "hydro/radiation/added_mass.hpp"
 #include "hydro/radiation/state_space.hpp"
+#include "kernel/algorithms/kinematics.hpp"
+#include "samples/floating_bodies.hpp"
 #include "tests/test_support.hpp"
 
 // A namespace of its own: the unity build compiles this file together with others
@@ -200,6 +209,152 @@ TEST_F(SemisubKernel, H5ConvolutionMatchesStateSpace) {
     }
     EXPECT_LT(error / peak, 0.02) << "mode " << mode + 1;
     RecordProperty("convolution_vs_state_space_" + std::to_string(mode + 1), std::to_string(error / peak));
+  }
+}
+
+
+/// C (i w - A)^-1 B by complex LU here, apart from state_space.cpp's frequency_response.
+std::complex<double> transfer(const ModePairStateSpace& s, double w) {
+  const Eigen::Index n = s.A.rows();
+  const Eigen::MatrixXcd M =
+      std::complex<double>(0.0, w) * Eigen::MatrixXcd::Identity(n, n) - Eigen::MatrixXd(s.A).cast<std::complex<double>>();
+  const Eigen::VectorXcd x = M.fullPivLu().solve(Eigen::VectorXd(s.B).cast<std::complex<double>>());
+  return (Eigen::RowVectorXd(s.C).cast<std::complex<double>>() * x)(0);
+}
+
+/// A dense system of the given block-diagonal poles in the basis T: A = T P T^-1,
+/// B = T b, C = c T^-1, T = I + 0.4 R (R uniform in [-1, 1], seeded).
+ModePairStateSpace dense_system(const Eigen::MatrixXd& poles, unsigned seed) {
+  const Eigen::Index n = poles.rows();
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  Eigen::MatrixXd T = Eigen::MatrixXd::Identity(n, n);
+  Eigen::VectorXd b(n);
+  Eigen::RowVectorXd c(n);
+  for (Eigen::Index r = 0; r < n; ++r) {
+    for (Eigen::Index k = 0; k < n; ++k) T(r, k) += 0.4 * uniform(random);
+    b[r] = uniform(random);
+    c[r] = 1e5 * uniform(random);
+  }
+  const Eigen::MatrixXd T_inverse = T.inverse();
+  ModePairStateSpace s;
+  s.force_mode = 2;
+  s.velocity_mode = 4;
+  s.A = T * poles * T_inverse;
+  s.B = T * b;
+  s.C = c * T_inverse;
+  return s;
+}
+
+/// Block-diagonal poles: sigma_k +- i omega_k pairs, then real poles.
+Eigen::MatrixXd pole_blocks(const std::vector<std::pair<double, double>>& pairs, const std::vector<double>& reals) {
+  const Eigen::Index n = static_cast<Eigen::Index>(2 * pairs.size() + reals.size());
+  Eigen::MatrixXd P = Eigen::MatrixXd::Zero(n, n);
+  Eigen::Index k = 0;
+  for (const auto& [sigma, omega] : pairs) {
+    P(k, k) = P(k + 1, k + 1) = sigma;
+    P(k, k + 1) = omega;
+    P(k + 1, k) = -omega;
+    k += 2;
+  }
+  for (double real : reals) {
+    P(k, k) = real;
+    ++k;
+  }
+  return P;
+}
+
+// The modal form (to_modal_form) of a dense system of known poles: A becomes its 1 x 1
+// and 2 x 2 pole blocks, zero elsewhere, and the transfer function C (iw - A)^-1 B, so the
+// kernel C e^{At} B, stays the dense system's to ~1e-12 (both computed here by complex LU,
+// and the impulse response by Eigen's matrix exponential).
+TEST(HydroRadiation, ModalFormKeepsTheKernelOfADenseRealisation) {
+  const Eigen::MatrixXd poles = pole_blocks({{-0.05, 0.4}, {-0.2, 1.1}, {-0.6, 2.5}}, {-0.3, -1.7});
+  const ModePairStateSpace dense = dense_system(poles, 7);
+  ModePairStateSpace modal = dense;
+  ASSERT_TRUE(to_modal_form(modal));
+  const Eigen::Index n = poles.rows();
+  for (Eigen::Index r = 0; r < n; ++r)
+    for (Eigen::Index c = 0; c < n; ++c)
+      if (std::abs(r - c) > 1) {
+        EXPECT_EQ(modal.A(r, c), 0.0) << r << ", " << c;
+      }
+  // Each block is a pole's: its eigenvalues are among the chosen ones.
+  const Eigen::VectorXcd found = Eigen::MatrixXd(modal.A).eigenvalues();
+  const Eigen::VectorXcd chosen = poles.eigenvalues();
+  for (Eigen::Index k = 0; k < n; ++k)
+    EXPECT_LT((chosen.array() - found[k]).abs().minCoeff(), 1e-12) << found[k];
+  for (double w : {0.0, 0.1, 0.4, 1.0, 2.5, 8.0}) {
+    const std::complex<double> expected = transfer(dense, w);
+    EXPECT_LT(std::abs(transfer(modal, w) - expected), 1e-12 * std::abs(expected)) << "w = " << w;
+  }
+  for (double t : {0.0, 0.7, 3.0, 11.0}) {
+    const double expected = (Eigen::RowVectorXd(dense.C) * (Eigen::MatrixXd(dense.A) * t).exp() * Eigen::VectorXd(dense.B))(0);
+    const double got = (Eigen::RowVectorXd(modal.C) * (Eigen::MatrixXd(modal.A) * t).exp() * Eigen::VectorXd(modal.B))(0);
+    EXPECT_LT(std::abs(got - expected), 1e-11 * std::abs(Eigen::RowVectorXd(dense.C).norm() * Eigen::VectorXd(dense.B).norm()))
+        << "t = " << t;
+  }
+  // A defective A (a 3 x 3 Jordan block at -0.5) has no eigenvector basis: it stays dense.
+  Eigen::MatrixXd jordan = -0.5 * Eigen::MatrixXd::Identity(3, 3);
+  jordan(0, 1) = jordan(1, 2) = 1.0;
+  const ModePairStateSpace defective = dense_system(jordan, 11);
+  ModePairStateSpace kept = defective;
+  EXPECT_FALSE(to_modal_form(kept));
+  EXPECT_EQ(Eigen::MatrixXd(kept.A), Eigen::MatrixXd(defective.A));
+  EXPECT_EQ(Eigen::VectorXd(kept.B), Eigen::VectorXd(defective.B));
+  EXPECT_EQ(Eigen::RowVectorXd(kept.C), Eigen::RowVectorXd(defective.C));
+}
+
+// The memory's rates and load for a modal system (banded product) and a dense one, on a
+// floating body at a random state: z' = A z + B v_j and F_i = -C z by Eigen's dense
+// products here.
+TEST(HydroRadiation, MemoryRatesOfModalAndDenseSystemsAreAzPlusBv) {
+  ModePairStateSpace modal = dense_system(pole_blocks({{-0.1, 0.5}, {-0.3, 1.4}}, {-0.8}), 3);
+  ASSERT_TRUE(to_modal_form(modal));
+  Eigen::MatrixXd jordan = -0.5 * Eigen::MatrixXd::Identity(3, 3);
+  jordan(0, 1) = jordan(1, 2) = 1.0;
+  ModePairStateSpace dense = dense_system(jordan, 5);
+  dense.force_mode = 0;
+  dense.velocity_mode = 2;
+  ASSERT_FALSE(to_modal_form(dense));
+  auto model = samples::free_floating_body("hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()),
+                                           std::nullopt);
+  const int link = model->link_index("hull");
+  const RadiationMemory memory("radiation", link, {modal, dense});
+  ASSERT_EQ(memory.state_size(), 8);
+  Data data(*model);
+  VectorX q = model->neutral_configuration(), v(model->nv);
+  q.head<3>() << 0.3, -0.2, 0.1;
+  v << 0.02, -0.01, 0.03, 0.4, -0.3, 0.2;
+  update_positions(*model, data, q);
+  update_velocities(*model, data, q, v);
+  const Vector6 velocity = body_motion(*model, data, link).velocity;
+  std::mt19937 random(17);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  VectorX z(8), rates(8);
+  for (Eigen::Index k = 0; k < 8; ++k) z[k] = uniform(random);
+  memory.state_derivative(0.0, *model, data, z, rates);
+  const Eigen::VectorXd modal_expected =
+      Eigen::MatrixXd(modal.A) * z.head(5) + Eigen::VectorXd(modal.B) * velocity[modal.velocity_mode];
+  const Eigen::VectorXd dense_expected =
+      Eigen::MatrixXd(dense.A) * z.tail(3) + Eigen::VectorXd(dense.B) * velocity[dense.velocity_mode];
+  EXPECT_LT((rates.head(5) - modal_expected).norm(), 1e-14 * (modal_expected.norm() + 1.0));
+  EXPECT_LT((rates.tail(3) - dense_expected).norm(), 1e-14 * (dense_expected.norm() + 1.0));
+  const Vector6 load = memory.load(z);
+  EXPECT_NEAR(load[2], -(Eigen::RowVectorXd(modal.C) * z.head(5))(0), 1e-9 * Eigen::RowVectorXd(modal.C).norm());
+  EXPECT_NEAR(load[0], -(Eigen::RowVectorXd(dense.C) * z.tail(3))(0), 1e-9 * Eigen::RowVectorXd(dense.C).norm());
+}
+
+// The MSS semi's realisations (order 12, the kernel to 600 s) come out in modal form.
+TEST_F(SemisubKernel, H5RealisationsAreInModalForm) {
+  for (auto [i, j] : {std::pair{2, 2}, std::pair{4, 4}, std::pair{0, 4}, std::pair{4, 0}}) {
+    const ModePairStateSpace ss = realize_kernel_entry(*kernel, i, j, 12);
+    for (Eigen::Index r = 0; r < 12; ++r)
+      for (Eigen::Index c = 0; c < 12; ++c)
+        if (std::abs(r - c) > 1) {
+          EXPECT_EQ(ss.A(r, c), 0.0) << i << j << ": " << r << ", " << c;
+        }
+    EXPECT_TRUE(ss.stable);
   }
 }
 

@@ -81,7 +81,9 @@ TEST(JointStopEvents, DroppedLoadBouncesAtTheFreeFallImpactsAndComesToRest) {
   EXPECT_LT(worst, 1e-10);  // m; measured 1.7e-12 at rtol 1e-10
   EXPECT_EQ(run.integrator->statistics().events, 7);  // one per impact, none spurious
   EXPECT_NEAR(run.stop_force(), mass * g, 1e-8 * mass * g);
-  EXPECT_EQ(run.speed(), 0.0);
+  // At rest on the stop: zero to round-off far below the tolerances (5e-90 m/s measured
+  // with IDA's Newton matrix kept across wide cj changes, exactly 0 with a new one each).
+  EXPECT_LT(std::abs(run.speed()), 1e-14);
 }
 
 TEST(JointStopEvents, LoadOnAHeavingFloorLiftsOffAndLandsAsTheClosedForm) {
