@@ -1,12 +1,9 @@
 #include "app/output/recorder.hpp"
 
-#include <sched.h>
-
 #include <algorithm>
 #include <cmath>
 #include <span>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
 #include <fmt/format.h>
@@ -91,14 +88,6 @@ std::string multiplier_unit(ConstraintRowKind kind) {
     default:
       return "N or N m";
   }
-}
-
-/// The cores this process may run on: its affinity mask (a run pinned to one core, by
-/// `taskset` or a cluster's scheduler, has no second core to evaluate on), else the machine's.
-int usable_cores() {
-  cpu_set_t cores;
-  if (sched_getaffinity(0, sizeof cores, &cores) == 0) return CPU_COUNT(&cores);
-  return static_cast<int>(std::thread::hardware_concurrency());
 }
 
 }  // namespace
@@ -517,13 +506,13 @@ void Recorder::hand_over_block() {
   block_worker_.start();
 }
 
-void Recorder::add_block_statistics(bool last_whole_block, long rows, long window_first_row) {
+void Recorder::add_last_block_statistics(long window_first_row) {
   // Column by column over a block instead of channel by channel every sample: the
   // recording's share of the drilling run (docs/performance.md). The rows are where the
-  // channels wrote them, in the file's blocks.
+  // channels wrote them, in the file's last whole block.
   for (Channel& channel : channels_)
-    add_block_statistics(channel, last_whole_block ? file_.last_block(channel.series) : file_.block(channel.series),
-                         rows, window_first_row);
+    add_block_statistics(channel, file_.last_block(channel.series), static_cast<long>(ResultFile::block_rows),
+                         window_first_row);
 }
 
 void Recorder::add_block_statistics(Channel& channel, const double* block, long rows, long window_first_row) {
@@ -588,7 +577,9 @@ void Recorder::finish() {
     for (std::size_t c = 0; c < channels_.size(); ++c) blocks[c] = file_.block(channels_[c].series);  // moves the staged rows
   }
   std::vector<std::vector<double>> values(channels_.size());
-  for_each_index_on_two_threads(channels_.size(), [&](std::size_t c) {
+  // A second thread only where the run has a core of its own beside the integration's, as
+  // for the samples (not in the runs of a sweep side by side).
+  for_each_index(channels_.size(), evaluates_beside() ? 2 : 1, [&](std::size_t c) {
     if (blocks[c] != nullptr) add_block_statistics(channels_[c], blocks[c], block_samples_, window_first_row_);
     values[c] = response_statistic_values(channels_[c]);
   });

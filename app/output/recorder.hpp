@@ -125,10 +125,11 @@ class Recorder {
   /// The whole record's minimum, maximum, mean and standard deviation of every column:
   /// the samples before the window merged with the window's (Pébay 2008, eq. 3.1).
   static RunningStatistics whole_record_statistics(const Channel& channel);
-  /// `rows` samples of a block into every channel's statistics: the last whole block
-  /// (on the block worker's thread) or, at the end, the block being built.
-  void add_block_statistics(bool last_whole_block, long rows, long window_first_row);
-  /// The same for one channel and its rows `block` (touches that channel only). Out of line
+  /// The last whole block's samples into every channel's statistics (the block worker's
+  /// job; the end of the run adds the block being built channel by channel, finish()).
+  void add_last_block_statistics(long window_first_row);
+  /// `rows` samples of one channel's rows `block` into its statistics (touches that
+  /// channel only), the window's from `window_first_row` (-1: none of them). Out of line
   /// so that a profile sees every block's statistics under this one name
   /// (scripts/instruction_share.py): the block worker's and the end of the run's.
   [[gnu::noinline]] static void add_block_statistics(Channel& channel, const double* block, long rows,
@@ -208,7 +209,7 @@ class Recorder {
   // ended first, before the channels it reads go.
   long handed_window_first_row_ = -1;  // the handed-over block's window_first_row_
   BackgroundWorker block_worker_{[this] {
-    add_block_statistics(true, static_cast<long>(ResultFile::block_rows), handed_window_first_row_);
+    add_last_block_statistics(handed_window_first_row_);
   }};
   // The samples evaluated beside the integration (evaluate_on_second_thread): this thread
   // fills batches_[filling_] while the evaluation thread records the other one, the

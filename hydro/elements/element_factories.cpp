@@ -32,10 +32,12 @@ void keep_modes(RetardationKernel& kernel, const ModeSet& modes) {
 
 std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, const ModeSet& modes, int order) {
   // The pairs are independent (each a symmetric eigenproblem of the Hankel matrix, up to
-  // 150 x 150, ~16 M instructions): two at a time, each the same numbers on either thread.
+  // 150 x 150, ~16 M instructions): two at a time where the process may use two cores, each
+  // the same numbers on either thread. (A sweep's runs side by side then share their cores
+  // for the ~0.1 s of a scene build.)
   const auto pairs = realised_mode_pairs(kernel, modes);
   std::vector<ModePairStateSpace> systems(pairs.size());
-  for_each_index_on_two_threads(pairs.size(), [&](std::size_t k) {
+  for_each_index(pairs.size(), usable_cores() >= 2 ? 2 : 1, [&](std::size_t k) {
     systems[k] = realize_kernel_entry(kernel, pairs[k].first, pairs[k].second, order);
   });
   for (const ModePairStateSpace& realised : systems)

@@ -31,6 +31,7 @@ constexpr double largest_modal_condition = 1e6;
 
 bool to_modal_form(ModePairStateSpace& system) {
   const Eigen::MatrixXd A = system.A;
+  if (A.rows() == 0) return false;
   const Eigen::EigenSolver<Eigen::MatrixXd> eigen(A);
   if (eigen.info() != Eigen::Success) return false;
   // A V = V D, D block diagonal: a 1 x 1 block per real eigenvalue, a 2 x 2 block

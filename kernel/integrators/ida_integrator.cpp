@@ -224,7 +224,7 @@ void IdaIntegrator::restart(double t0) {
   // only the state it was taken at ages, which a slow Newton convergence reports (a
   // convergence failure brings a new Jacobian). dcj = 0.9 widens the range to [0.053, 19]:
   // the 3-hour H1 run took 851 Jacobians instead of 9405 for 178,176 steps instead of
-  // 166,172, at the same accuracy against its 1e-8 reference, CPU 0.85 (docs/performance.md,
+  // 166,172, at the same accuracy against its 1e-8 reference, CPU 0.86 (docs/performance.md,
   // "Issue #18, fourteenth round"). (Tried before the matrix was re-formed, the wider range
   // cost the slider-crank more failures: its matrix then carried the old cj.)
   if (reform) IDASetDeltaCjLSetup(ida_, 0.9);

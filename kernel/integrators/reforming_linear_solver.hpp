@@ -1,7 +1,8 @@
 #pragma once
 // A SUNDIALS linear solver that keeps IDA's Newton matrix G = dF/dy + cj dF/dy' current
 // between IDA's own evaluations of it. IDA forms G when it judges the old one too stale
-// (cj outside 0.6 to 1.67 of the cj it was formed at, or after a failed iteration) and
+// (cj outside 0.053 to 19 of the cj it was formed at, as IdaIntegrator sets dcj = 0.9 for
+// this solver; IDA's default range is 0.6 to 1.67; or after a failed iteration) and
 // solves with the old one otherwise (modified Newton). This solver wraps a matrix-based
 // solver (the dense LU, KLU) and, before a solve, re-forms G from the system's parts of
 // the last evaluation and has the inner solver factor it again when

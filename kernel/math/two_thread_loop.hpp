@@ -1,9 +1,11 @@
 #pragma once
-// A loop over independent items on the calling thread and one more, for work that runs
-// when nothing else does and would otherwise leave the second core idle: the end of a
+// A loop over independent items on the calling thread and at most one more, for work that
+// runs when nothing else does and would otherwise leave a second core idle: the end of a
 // run's statistics (app/output/recorder.cpp: the channels' spectra, cycle counts and
 // extreme-value fits) and a radiation memory's realisations before the run
 // (hydro/elements/element_factories.cpp: a symmetric eigenproblem per mode pair).
+#include <sched.h>
+
 #include <atomic>
 #include <cstddef>
 #include <exception>
@@ -12,13 +14,23 @@
 
 namespace heavesim {
 
-/// Calls work(i) once for every i in [0, count). The two threads take the indices in
-/// turn from one counter, so a costly item does not leave the other thread idle; each
-/// item's work must touch only that item's data. In line when count < 2 or no thread can
-/// be had. A failure stops both threads from taking more items; the caller's is thrown,
-/// else the other thread's.
+/// The cores this process may run on: its affinity mask (a run pinned to one core, by
+/// `taskset` or a cluster's scheduler, has no second core), else the machine's.
+inline int usable_cores() {
+  cpu_set_t cores;
+  if (sched_getaffinity(0, sizeof cores, &cores) == 0) return CPU_COUNT(&cores);
+  return static_cast<int>(std::thread::hardware_concurrency());
+}
+
+/// Calls work(i) once for every i in [0, count): with `threads` = 2 on the calling thread
+/// and one more, which take the indices in turn from one counter (a costly item does not
+/// leave the other thread idle); with 1, or when count < 2 or no thread can be had, all
+/// on the caller's. Each item's work must touch only that item's data. A failure stops
+/// both threads from taking more items (each finishes the one in hand); the caller's
+/// failure is thrown, else the other thread's: with several failing items, which one is
+/// reported depends on the threads' timing.
 template <typename Work>
-void for_each_index_on_two_threads(std::size_t count, Work&& work) {
+void for_each_index(std::size_t count, int threads, Work&& work) {
   std::atomic<std::size_t> next{0};
   auto take_items = [&] {
     for (std::size_t i = next.fetch_add(1); i < count; i = next.fetch_add(1)) {
@@ -32,7 +44,7 @@ void for_each_index_on_two_threads(std::size_t count, Work&& work) {
   };
   std::exception_ptr helper_failure;
   std::thread helper;
-  if (count > 1) {
+  if (threads >= 2 && count > 1) {
     try {
       helper = std::thread([&] {
         try {

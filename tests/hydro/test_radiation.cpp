@@ -305,23 +305,27 @@ TEST(HydroRadiation, ModalFormKeepsTheKernelOfADenseRealisation) {
   EXPECT_EQ(Eigen::RowVectorXd(kept.C), Eigen::RowVectorXd(defective.C));
 }
 
-// The memory's rates and load for a modal system (banded product) and a dense one, on a
-// floating body at a random state: z' = A z + B v_j and F_i = -C z by Eigen's dense
-// products here.
+// The memory's rates and load for systems in modal form (banded products: one of five
+// states, one of one state, one of four after a dense one) and a dense one, on a floating
+// body at a random state: z' = A z + B v_j and F_i = -C z by Eigen's dense products here.
 TEST(HydroRadiation, MemoryRatesOfModalAndDenseSystemsAreAzPlusBv) {
-  ModePairStateSpace modal = dense_system(pole_blocks({{-0.1, 0.5}, {-0.3, 1.4}}, {-0.8}), 3);
-  ASSERT_TRUE(to_modal_form(modal));
+  // The third: a 3 x 3 Jordan block at -0.5, which has no eigenvector basis and stays dense.
   Eigen::MatrixXd jordan = -0.5 * Eigen::MatrixXd::Identity(3, 3);
   jordan(0, 1) = jordan(1, 2) = 1.0;
-  ModePairStateSpace dense = dense_system(jordan, 5);
-  dense.force_mode = 0;
-  dense.velocity_mode = 2;
-  ASSERT_FALSE(to_modal_form(dense));
+  std::vector<ModePairStateSpace> systems{dense_system(pole_blocks({{-0.1, 0.5}, {-0.3, 1.4}}, {-0.8}), 3),
+                                          dense_system(pole_blocks({}, {-0.7}), 4), dense_system(jordan, 5),
+                                          dense_system(pole_blocks({{-0.2, 0.9}}, {-0.4, -1.1}), 6)};
+  const std::vector<bool> modal{true, true, false, true};
+  for (std::size_t k = 0; k < systems.size(); ++k) {
+    EXPECT_EQ(to_modal_form(systems[k]), modal[k]) << k;
+    systems[k].force_mode = static_cast<int>(k);
+    systems[k].velocity_mode = static_cast<int>(5 - k);
+  }
   auto model = samples::free_floating_body("hull", Inertia(2e5, Vector3(0, 0, -1), Vector3(1e6, 2e6, 3e6).asDiagonal()),
                                            std::nullopt);
   const int link = model->link_index("hull");
-  const RadiationMemory memory("radiation", link, {modal, dense});
-  ASSERT_EQ(memory.state_size(), 8);
+  const RadiationMemory memory("radiation", link, systems);
+  ASSERT_EQ(memory.state_size(), 13);
   Data data(*model);
   VectorX q = model->neutral_configuration(), v(model->nv);
   q.head<3>() << 0.3, -0.2, 0.1;
@@ -331,18 +335,21 @@ TEST(HydroRadiation, MemoryRatesOfModalAndDenseSystemsAreAzPlusBv) {
   const Vector6 velocity = body_motion(*model, data, link).velocity;
   std::mt19937 random(17);
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  VectorX z(8), rates(8);
-  for (Eigen::Index k = 0; k < 8; ++k) z[k] = uniform(random);
+  VectorX z(13), rates(13);
+  for (Eigen::Index k = 0; k < 13; ++k) z[k] = uniform(random);
   memory.state_derivative(0.0, *model, data, z, rates);
-  const Eigen::VectorXd modal_expected =
-      Eigen::MatrixXd(modal.A) * z.head(5) + Eigen::VectorXd(modal.B) * velocity[modal.velocity_mode];
-  const Eigen::VectorXd dense_expected =
-      Eigen::MatrixXd(dense.A) * z.tail(3) + Eigen::VectorXd(dense.B) * velocity[dense.velocity_mode];
-  EXPECT_LT((rates.head(5) - modal_expected).norm(), 1e-14 * (modal_expected.norm() + 1.0));
-  EXPECT_LT((rates.tail(3) - dense_expected).norm(), 1e-14 * (dense_expected.norm() + 1.0));
   const Vector6 load = memory.load(z);
-  EXPECT_NEAR(load[2], -(Eigen::RowVectorXd(modal.C) * z.head(5))(0), 1e-9 * Eigen::RowVectorXd(modal.C).norm());
-  EXPECT_NEAR(load[0], -(Eigen::RowVectorXd(dense.C) * z.tail(3))(0), 1e-9 * Eigen::RowVectorXd(dense.C).norm());
+  Eigen::Index offset = 0;
+  for (const ModePairStateSpace& s : systems) {
+    const Eigen::Index n = s.A.rows();
+    const Eigen::VectorXd expected =
+        Eigen::MatrixXd(s.A) * z.segment(offset, n) + Eigen::VectorXd(s.B) * velocity[s.velocity_mode];
+    EXPECT_LT((rates.segment(offset, n) - expected).norm(), 1e-14 * (expected.norm() + 1.0)) << "offset " << offset;
+    EXPECT_NEAR(load[s.force_mode], -(Eigen::RowVectorXd(s.C) * z.segment(offset, n))(0),
+                1e-12 * Eigen::RowVectorXd(s.C).norm())
+        << "offset " << offset;
+    offset += n;
+  }
 }
 
 // The MSS semi's realisations (order 12, the kernel to 600 s) come out in modal form.
