@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <deque>
+#include <mutex>
 
 #include "hydro/elements/radiation_convolution.hpp"
 #include "hydro/elements/radiation_memory.hpp"
@@ -30,7 +33,43 @@ void keep_modes(RetardationKernel& kernel, const ModeSet& modes) {
         if (!modes[i] || !modes[j]) K(i, j) = 0.0;
 }
 
+namespace {
+
+// The last realisations this process made, with what they were made from. `heavesim run`
+// builds its scene twice from the same files (the second for the samples' evaluation,
+// Recorder::why_samples_in_line): the second build takes the first's realisations instead
+// of solving their eigenproblems again (~200 M instructions for the MSS semi's ten pairs).
+// A realisation is a function of the kernel's samples, the modes and the order only,
+// which are compared exactly. Four are kept (a case has one memory per floating body),
+// each with a copy of its kernel (~0.35 MB for 60 s at 0.05 s). The store is made under
+// the mutex and never freed, as signal/hann_segment.cpp's plans: no thread can lose it
+// during the program's exit.
+struct Realised {
+  double time_step = 0.0;
+  ModeSet modes{};
+  int order = 0;
+  std::vector<Matrix6> samples;
+  std::vector<ModePairStateSpace> systems;
+};
+constexpr std::size_t realisations_kept = 4;
+std::mutex realised_mutex;
+std::deque<Realised>* realised = nullptr;  // the newest first
+
+bool made_from(const Realised& kept, const RetardationKernel& kernel, const ModeSet& modes, int order) {
+  return kept.time_step == kernel.time_step && kept.modes == modes && kept.order == order &&
+         std::equal(kept.samples.begin(), kept.samples.end(), kernel.values.begin(), kernel.values.end(),
+                    [](const Matrix6& a, const Matrix6& b) { return a == b; });
+}
+
+}  // namespace
+
 std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, const ModeSet& modes, int order) {
+  {
+    const std::lock_guard lock(realised_mutex);
+    if (realised != nullptr)
+      for (const Realised& kept : *realised)
+        if (made_from(kept, kernel, modes, order)) return kept.systems;
+  }
   // The pairs are independent (each a symmetric eigenproblem of the Hankel matrix, up to
   // 150 x 150, ~16 M instructions): two at a time where the process may use two cores, each
   // the same numbers on either thread. (A sweep's runs side by side then share their cores
@@ -46,6 +85,10 @@ std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, 
                            fmt::format("an unstable realisation of K_{}{} at order {} (R^2 = {:.4f})",
                                        realised.force_mode + 1, realised.velocity_mode + 1, order, realised.r_squared),
                            "an order whose realisation is stable (try a lower or higher order, or fewer modes)");
+  const std::lock_guard lock(realised_mutex);
+  if (realised == nullptr) realised = new std::deque<Realised>;
+  realised->push_front({kernel.time_step, modes, order, kernel.values, systems});
+  if (realised->size() > realisations_kept) realised->pop_back();
   return systems;
 }
 

@@ -40,9 +40,10 @@ std::vector<std::pair<int, int>> realised_mode_pairs(const RetardationKernel& ke
 /// Zeroes every K_ij (all samples) with mode i or j outside `modes`.
 void keep_modes(RetardationKernel& kernel, const ModeSet& modes);
 
-/// The state-space realisation of each pair of realised_mode_pairs. Throws
-/// ParameterError("state_space_order") when a realisation is unstable (its memory would
-/// grow without bound in a run).
+/// The state-space realisation of each pair of realised_mode_pairs (two pairs at a time;
+/// the process's last four kept, so a second build of a scene from the same data realises
+/// nothing again). Throws ParameterError("state_space_order") when a realisation is
+/// unstable (its memory would grow without bound in a run).
 std::vector<ModePairStateSpace> realize_memory(const RetardationKernel& kernel, const ModeSet& modes, int order);
 
 /// The radiation memory element of a body (link) from its BEM data: the kernel

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "hydro/elements/element_factories.hpp"
+#include "hydro/radiation/state_space.hpp"
 #include "kernel/parameter_error.hpp"
 
 namespace heavesim::hydro {
@@ -34,6 +35,49 @@ TEST(HydroElementFactories, RealisesThePairsNotNegligibleAgainstTheirDiagonal) {
   // Only pairs of the modes asked for.
   const ModeSet heave = {false, false, true, false, false, false};
   EXPECT_EQ(realised_mode_pairs(hand_kernel(7e-3, 3e-3), heave), (Pairs{{2, 2}}));
+}
+
+/// 30 s of K33 = 5e5 e^(-0.2 t) cos(0.8 t) and K55 = 2e8 e^(-0.3 t) cos(1.1 t), every 0.05 s.
+RetardationKernel damped_kernel() {
+  RetardationKernel kernel{0.05, std::vector<Matrix6>(601, Matrix6::Zero())};
+  for (std::size_t k = 0; k < kernel.values.size(); ++k) {
+    const double t = 0.05 * static_cast<double>(k);
+    kernel.values[k](2, 2) = 5e5 * std::exp(-0.2 * t) * std::cos(0.8 * t);
+    kernel.values[k](4, 4) = 2e8 * std::exp(-0.3 * t) * std::cos(1.1 * t);
+  }
+  return kernel;
+}
+
+/// realize_memory's systems against realize_kernel_entry's, pair by pair, bit for bit.
+void expect_realisations_of(const RetardationKernel& kernel, const ModeSet& modes, int order) {
+  const std::vector<ModePairStateSpace> systems = realize_memory(kernel, modes, order);
+  const auto pairs = realised_mode_pairs(kernel, modes);
+  ASSERT_EQ(systems.size(), pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    const ModePairStateSpace direct = realize_kernel_entry(kernel, pairs[k].first, pairs[k].second, order);
+    EXPECT_EQ(Eigen::MatrixXd(systems[k].A), Eigen::MatrixXd(direct.A)) << "pair " << k << ", order " << order;
+    EXPECT_EQ(Eigen::VectorXd(systems[k].B), Eigen::VectorXd(direct.B)) << "pair " << k << ", order " << order;
+    EXPECT_EQ(Eigen::RowVectorXd(systems[k].C), Eigen::RowVectorXd(direct.C)) << "pair " << k << ", order " << order;
+  }
+}
+
+// The process keeps its last realisations for a second build of the same scene: what it
+// returns is always the realisation of the kernel, modes and order asked for, whichever
+// was asked before (a kernel one sample apart, another order, other modes).
+TEST(HydroElementFactories, RealisationsAreThoseOfTheKernelAsked) {
+  const ModeSet heave_pitch = {false, false, true, false, true, false};
+  const ModeSet heave = {false, false, true, false, false, false};
+  const RetardationKernel kernel = damped_kernel();
+  RetardationKernel changed = kernel;
+  changed.values[300](2, 2) *= 1.01;
+  for (int repeat = 0; repeat < 2; ++repeat) {  // the second time, every one is kept
+    expect_realisations_of(kernel, heave_pitch, 4);
+    expect_realisations_of(changed, heave_pitch, 4);
+    expect_realisations_of(kernel, heave_pitch, 6);
+    expect_realisations_of(kernel, heave, 4);
+  }
+  EXPECT_NE(Eigen::MatrixXd(realize_memory(kernel, heave, 4)[0].C),
+            Eigen::MatrixXd(realize_memory(changed, heave, 4)[0].C));
 }
 
 TEST(HydroElementFactories, KeepModesZeroesEveryOtherPair) {
