@@ -217,7 +217,7 @@ void IdaIntegrator::restart(double t0) {
   }
   IDASetLinearSolver(ida_, linear_solver_, matrix_);
   if (analytic) IDASetJacFn(ida_, &IdaIntegrator::jacobian);
-  // The solution is for the current cj already: IDA's scaling for a stale cj would spoil it.
+  // The reforming solver scales a solution for an older cj itself, where it used one.
   if (reform) IDASetLinearSolutionScaling(ida_, SUNFALSE);
   // IDA asks for a new Jacobian when cj has moved out of [0.6, 1.67] of the matrix's (its
   // default dcj = 0.25): its matrix would be stale in cj. A re-formed matrix never is, so

@@ -1,5 +1,6 @@
 #include "kernel/integrators/reforming_linear_solver.hpp"
 
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <new>
@@ -55,12 +56,18 @@ int solve(SUNLinearSolver solver, SUNMatrix matrix, N_Vector x, N_Vector b, real
   const NewtonMatrixSource& source = state.source;
   const double cj = source.current_cj(source.user_data);
   const bool refreshed = source.refresh && source.refresh(source.user_data);
-  if (cj != state.factored_cj || refreshed) {
-    source.form(source.user_data, cj, matrix);
-    state.factored_cj = kNoFactor;
-    if (const int flag = SUNLinSolSetup(state.inner, matrix); flag != SUNLS_SUCCESS) return as_solve_flag(flag);
-    state.factored_cj = cj;
+  const double cj_ratio = cj / state.factored_cj;  // NaN without a factor
+  if (!refreshed && std::abs(cj_ratio - 1.0) <= kCjChangeSolvedWithTheFactor) {
+    // IDA's own correction of a solution for a stale cj, as DASSL's (Brenan, Campbell &
+    // Petzold 1996): the factored matrix's solution scaled by 2 / (1 + cj / cj_factored).
+    const int flag = SUNLinSolSolve(state.inner, matrix, x, b, tolerance);
+    if (cj_ratio != 1.0) N_VScale(2.0 / (1.0 + cj_ratio), x, x);
+    return flag;
   }
+  source.form(source.user_data, cj, matrix);
+  state.factored_cj = kNoFactor;
+  if (const int flag = SUNLinSolSetup(state.inner, matrix); flag != SUNLS_SUCCESS) return as_solve_flag(flag);
+  state.factored_cj = cj;
   return SUNLinSolSolve(state.inner, matrix, x, b, tolerance);
 }
 

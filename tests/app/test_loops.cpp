@@ -171,11 +171,12 @@ TEST(Loops, DaeNewtonMatrixWithElementStatesMatchesFiniteDifferences) {
 TEST(Loops, SingularPassStopsWithADiagnosisNotANaN) {
   // The four-bars of IFToMM A02 lie flat at q = pi/2 + k pi, where the loop loses
   // rank. Where an integrator cannot pass (Dormand-Prince with the KKT solve at 1e-8;
-  // IDA's GGL form at 1e-10 for N = 2, measured) it must stop with exit code 3 and a
-  // diagnosis, leaving a readable, incomplete result file.
+  // IDA's GGL form at 1e-11 for N = 2, measured; it passes at 1e-10 since its Newton matrix
+  // is kept within 30 % of cj, docs/physics/constraints-and-integration.md §5) it must stop
+  // with exit code 3 and a diagnosis, leaving a readable, incomplete result file.
   for (const auto& [case_name, overrides] :
        {std::pair<std::string, std::string>{"iftomm_a02_n1", "solver.integrator=dopri5 --set solver.rtol=1e-8"},
-        std::pair<std::string, std::string>{"iftomm_a02_n2", "solver.integrator=ida --set solver.rtol=1e-10"}}) {
+        std::pair<std::string, std::string>{"iftomm_a02_n2", "solver.integrator=ida --set solver.rtol=1e-11"}}) {
     const std::string output =
         (std::filesystem::temp_directory_path() / ("heavesim_singular_" + case_name + ".h5")).string();
     const testing::CommandResult result = testing::run_command_line(

@@ -1,5 +1,6 @@
-// The linear solver that re-forms IDA's Newton matrix dF/dy + cj dF/dy' at each new cj and
-// after a refresh (kernel/integrators/reforming_linear_solver.hpp), around the dense LU and
+// The linear solver that re-forms IDA's Newton matrix dF/dy + cj dF/dy' when cj moved by more
+// than kCjChangeSolvedWithTheFactor from the factored one (and scales the factor's solution
+// as IDA does within it) and after a refresh (kernel/integrators/reforming_linear_solver.hpp), around the dense LU and
 // around KLU. Reference: the same matrices formed here and solved by SUNDIALS' own dense
 // solver (SUNLinSol_Dense, a separate implementation).
 #include <gtest/gtest.h>
@@ -96,9 +97,25 @@ void check_reforming(bool sparse) {
   };
   EXPECT_LT(relative_error(solve(), parts.residual_y), 1e-12);
   EXPECT_EQ(parts.forms, 0) << "the matrix of the setup is for this cj";
-  parts.cj = 47.3;  // a new step size
+  // A new step size within the kept change (10 % < 30 %): the factor of cj = 40 solves, its
+  // solution scaled by IDA's 2 / (1 + cj / 40); the reference is that matrix's solution.
+  static_assert(sundials::kCjChangeSolvedWithTheFactor > 0.1 && sundials::kCjChangeSolvedWithTheFactor < 0.5);
+  parts.cj = 44.0;
+  {
+    const VectorX stale = testing::sundials_dense_solution(parts.residual_y + 40.0 * parts.residual_yp, b);
+    EXPECT_LT((solve() - 2.0 / (1.0 + 44.0 / 40.0) * stale).norm() / stale.norm(), 1e-12);
+    EXPECT_GT(relative_error(solve(), parts.residual_y), 1e-3) << "not the current cj's solution";
+    EXPECT_EQ(parts.forms, 0);
+  }
+  parts.cj = 60.0;  // a step size beyond it (50 %): re-formed and factored at the current cj
   EXPECT_LT(relative_error(solve(), parts.residual_y), 1e-12);
   EXPECT_EQ(parts.forms, 1);
+  parts.cj = 52.0;  // 13 % below the new factor's cj: that factor (60) serves, not the first
+  {
+    const VectorX stale = testing::sundials_dense_solution(parts.residual_y + 60.0 * parts.residual_yp, b);
+    EXPECT_LT((solve() - 2.0 / (1.0 + 52.0 / 60.0) * stale).norm() / stale.norm(), 1e-12);
+    EXPECT_EQ(parts.forms, 1);
+  }
   parts.refresh_pending = true;  // the same cj, new dF/dy
   EXPECT_LT(relative_error(solve(), parts.refreshed_residual_y), 1e-12);
   EXPECT_EQ(parts.forms, 2);
