@@ -186,8 +186,8 @@ void IdaIntegrator::restart(double t0) {
     linear_solver_ = sundials::make_dense_lu_linear_solver(matrix_, context_);
   }
   // With position multipliers (loops, drivers, locks, active stops: rows kept in the DAE)
-  // the Newton matrix is re-formed from the system's parts for each new cj and after the
-  // system refreshed its cheap blocks (reforming_linear_solver.hpp,
+  // the Newton matrix is re-formed from the system's parts when cj moved by more than 30 %
+  // from its factor's and after the system refreshed its cheap blocks (reforming_linear_solver.hpp,
   // DaeSystem::refresh_jacobian): on a matrix formed at another cj, or before a loop
   // turned, the multipliers mu converge too slowly for IDA's four iterations
   // (docs/physics/constraints-and-integration.md §5). Slider-crank L1, rtol = atol = 1e-6: 65 convergence failures in 286 steps, 85
@@ -220,8 +220,9 @@ void IdaIntegrator::restart(double t0) {
   // The reforming solver scales a solution for an older cj itself, where it used one.
   if (reform) IDASetLinearSolutionScaling(ida_, SUNFALSE);
   // IDA asks for a new Jacobian when cj has moved out of [0.6, 1.67] of the matrix's (its
-  // default dcj = 0.25): its matrix would be stale in cj. A re-formed matrix never is, so
-  // only the state it was taken at ages, which a slow Newton convergence reports (a
+  // default dcj = 0.25): its matrix would be stale in cj. The re-forming solver keeps its
+  // factor within 30 % of cj, so only the state the parts were taken at ages, which a slow
+  // Newton convergence reports (a
   // convergence failure brings a new Jacobian). dcj = 0.9 widens the range to [0.053, 19]:
   // the 3-hour H1 run took 851 Jacobians instead of 9405 for 178,176 steps instead of
   // 166,172, at the same accuracy against its 1e-8 reference, CPU 0.86 (docs/performance.md,

@@ -256,14 +256,16 @@ TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
     });
   }
   SUNLinSolFree(solver);
-  // Wrapped to re-form the Newton matrix: a solve at a new cj re-forms and factors it.
+  // Wrapped to re-form the Newton matrix: a solve after a refresh re-forms and factors it;
+  // one at a cj within the kept band solves with the factor and scales.
   struct Parts {
     MatrixX residual_y, residual_yp, work;
     double cj = 3.0;
+    bool refresh = true;
   } parts{Eigen::Map<MatrixX>(SUNDenseMatrix_Data(matrix), n, n), MatrixX::Identity(n, n), MatrixX(n, n)};
   solver = sundials::make_reforming_linear_solver(
       sundials::make_dense_lu_linear_solver(matrix, context),
-      {[](void* p) { return static_cast<Parts*>(p)->cj; }, [](void*) { return true; },
+      {[](void* p) { return static_cast<Parts*>(p)->cj; }, [](void* p) { return static_cast<Parts*>(p)->refresh; },
        [](void* p, double cj, SUNMatrix m) {
          auto& parts = *static_cast<Parts*>(p);
          parts.work.noalias() = parts.residual_y + cj * parts.residual_yp;
@@ -276,6 +278,9 @@ TEST(NoMalloc, DenseLuLinearSolverDoesNotAllocate) {
     EXPECT_NO_THROW({
       EXPECT_EQ(SUNLinSolSetup(solver, matrix), SUNLS_SUCCESS);
       parts.cj = 4.5;
+      EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
+      parts.refresh = false;
+      parts.cj = 4.5 * (1.0 + 0.5 * sundials::kCjChangeSolvedWithTheFactor);
       EXPECT_EQ(SUNLinSolSolve(solver, matrix, solution, rhs, 0.0), SUNLS_SUCCESS);
     });
   }
