@@ -222,8 +222,8 @@ void IdaIntegrator::restart(double t0) {
   // IDA asks for a new Jacobian when cj has moved out of [0.6, 1.67] of the matrix's (its
   // default dcj = 0.25): its matrix would be stale in cj. The re-forming solver keeps its
   // factor within 30 % of cj, so only the state the parts were taken at ages, which a slow
-  // Newton convergence reports (a
-  // convergence failure brings a new Jacobian). dcj = 0.9 widens the range to [0.053, 19]:
+  // Newton convergence reports (a convergence failure brings a new Jacobian). dcj = 0.9
+  // widens the range to [0.053, 19]:
   // the 3-hour H1 run took 851 Jacobians instead of 9405 for 178,176 steps instead of
   // 166,172, at the same accuracy against its 1e-8 reference, CPU 0.86 (docs/performance.md,
   // "Issue #18, fourteenth round"). (Tried before the matrix was re-formed, the wider range
