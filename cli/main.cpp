@@ -3,10 +3,12 @@
 
 #include "cli/commands/command_support.hpp"
 #include "cli/commands/commands.hpp"
+#include "cli/process_memory.hpp"
 #include "app/version.hpp"
 
 int main(int argc, char** argv) {
   using namespace heavesim;
+  back_heap_with_huge_pages();
   CLI::App app{"heavesim: offshore heave-compensation simulator (multibody kernel with joint reactions)"};
   app.set_version_flag("--version", std::string(heavesim_version));
   app.require_subcommand(1);

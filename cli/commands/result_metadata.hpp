@@ -7,9 +7,10 @@
 
 namespace heavesim {
 
-/// heavesim_version, case_name, case_sha256, created_utc, complete = 0, units_system,
-/// and /case/yaml (the resolved case text).
-void write_result_metadata(ResultFile& file, const CaseDefinition& definition);
+/// heavesim_version, case_name, case_sha256 (`case_sha256`: sha256_hex of the resolved
+/// case text, app/case/sha256.hpp), created_utc, complete = 0, units_system, and
+/// /case/yaml (the resolved case text).
+void write_result_metadata(ResultFile& file, const CaseDefinition& definition, const std::string& case_sha256);
 
 /// Closed loops: rows, rank, redundant rows, how multipliers were chosen, assembly
 /// (attributes of /constraints); nothing for a tree.

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <vector>
 
@@ -14,6 +15,7 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_node.hpp"
+#include "app/case/sha256.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/command_support.hpp"
 #include "cli/commands/result_metadata.hpp"
@@ -51,6 +53,11 @@ int run_command(const RunOptions& options) {
   std::optional<CaseNode> case_tree(resolved_case_tree(options.case_path, options.overrides));
   const CaseDefinition definition = read_case(*case_tree, options.case_path, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
+  // The case's hash on the second core while the scene is built: OpenSSL's first digest
+  // sets up its providers, ~2 ms (docs/performance.md, "Issue #18, sixteenth round"). In
+  // line where no thread can be started.
+  std::future<std::string> case_sha256 = std::async(std::launch::async | std::launch::deferred,
+                                                    [&definition] { return sha256_hex(definition.resolved_yaml); });
 
   // The output place is checked (created) before the scene is built.
   const std::string output_path = prepare_result_path(options.output_path, definition.name);
@@ -61,7 +68,7 @@ int run_command(const RunOptions& options) {
   if (!options.quiet && scene.equilibrium) print_equilibrium_summary(scene);
   const SolverSettings& solver = definition.solver;
   ResultFile file(output_path, static_cast<hsize_t>(output_sample_count(solver, definition.output.interval)));
-  write_result_metadata(file, definition);
+  write_result_metadata(file, definition, case_sha256.get());
   write_constraint_summary(file, scene);
 
   std::optional<CsvWriter> csv;

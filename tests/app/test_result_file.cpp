@@ -9,9 +9,12 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <map>
 #include <sstream>
+#include <fcntl.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -393,6 +396,46 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
   EXPECT_EQ(read_records("other", fields), (std::vector<double>{5.0, 6.0}));
   EXPECT_EQ(fields, (std::vector<std::string>{"a", "c"}));
   std::filesystem::remove(output);
+}
+
+// An earlier file at the path goes at once (a stale complete = 1 must not stand for a run
+// that then fails in its set-up): a regular file by its name, its pages freed by a helper
+// thread (result_file.cpp); a FIFO removed, never opened (an open for reading would wait for
+// a writer); a link removed, not its target.
+TEST(ResultFile, AnEarlierFileAtThePathIsRemovedAtOnce) {
+  const std::string output = temporary("replaced.h5"), target = temporary("replaced_link_target.txt");
+  const auto gone = [&] { return !std::filesystem::exists(std::filesystem::symlink_status(output)); };
+  std::filesystem::remove(output);
+  std::ofstream(output) << std::string(std::size_t{1} << 22, 'x');  // 4 MiB: pages to free
+  {
+    ResultFile file(output);
+    EXPECT_TRUE(gone());  // the new file takes the name at its first flush
+    file.add_series("/series", 0, "-", "one column");
+    file.close();
+  }
+  EXPECT_GT(H5Fis_hdf5(output.c_str()), 0);
+  std::filesystem::remove(output);
+
+  ASSERT_EQ(mkfifo(output.c_str(), 0600), 0);
+  std::future<bool> fifo_removed = std::async(std::launch::async, [&] {
+    ResultFile file(output);
+    return gone();
+  });
+  if (fifo_removed.wait_for(std::chrono::seconds(20)) == std::future_status::timeout) {
+    ADD_FAILURE() << "the result file's constructor waits on the FIFO at its path";
+    const int writer = ::open(output.c_str(), O_WRONLY | O_NONBLOCK);  // lets a waiting open return
+    if (writer >= 0) ::close(writer);
+  }
+  EXPECT_TRUE(fifo_removed.get());
+
+  std::ofstream(target) << "kept";
+  std::filesystem::create_symlink(target, output);
+  {
+    ResultFile file(output);
+    EXPECT_TRUE(gone());
+  }
+  EXPECT_TRUE(std::filesystem::exists(target));
+  std::filesystem::remove(target);
 }
 
 // A record's fields are stored in name order, each at its place in the row: the stored
