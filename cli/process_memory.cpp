@@ -15,15 +15,16 @@ void back_heap_with_huge_pages() {
 #if defined(__GLIBC__) && defined(__linux__)
   constexpr std::uintptr_t huge_page = std::uintptr_t{2} << 20;
   constexpr int heap_step = 64 << 20;
-  // One arena: the helper threads' allocations (the recorder's, the block writer's) come
-  // from the advised heap too, not from 64 MiB arenas of their own. No hot path allocates
-  // (tests/kernel/test_no_heap_allocation.cpp), so the arena's lock is not contended.
-  mallopt(M_ARENA_MAX, 1);
-  // Blocks below 32 MiB (glibc's largest threshold) from the heap rather than a mapping of
-  // their own, which would be faulted in page by page and returned at every free.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TOP_PAD, heap_step);
-  mallopt(M_TRIM_THRESHOLD, 2 * heap_step);
+  // One arena: the helper threads' allocations (the recorder's, HDF5's on the block
+  // writer) come from the advised heap too, not from 64 MiB arenas of their own. They share
+  // its lock; the integration's step allocates nothing (tests/kernel/test_no_heap_allocation.cpp)
+  // and the helpers allocate a little per block, so it is rarely contended.
+  // Blocks below 32 MiB (the largest threshold 64-bit glibc takes; a setting turns off its
+  // dynamic threshold) from the heap rather than a mapping of their own, which would be
+  // faulted in page by page and returned at every free. Nothing more if glibc refuses one.
+  const bool configured = mallopt(M_ARENA_MAX, 1) == 1 && mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 &&
+                          mallopt(M_TOP_PAD, heap_step) == 1 && mallopt(M_TRIM_THRESHOLD, 2 * heap_step) == 1;
+  if (!configured) return;
   // Growing the heap once places the next 64 MiB (the top pad) behind the break; the
   // block's address is where the heap's free top begins (whether or not it grew).
   void* volatile grow = std::malloc(huge_page);  // volatile: a malloc/free pair the compiler may drop
@@ -32,7 +33,7 @@ void back_heap_with_huge_pages() {
   std::free(grow);
   // Only whole, aligned 2 MiB ranges can be huge pages.
   const std::uintptr_t first = (top + huge_page - 1) & ~(huge_page - 1), last = end & ~(huge_page - 1);
-  if (grow != nullptr && top < end && first < last)
+  if (top != 0 && top < end && first < last)
     madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);  // a refusal leaves 4 KiB pages
 #endif
 }

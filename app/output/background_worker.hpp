@@ -2,7 +2,8 @@
 // One fixed job run on a second thread, one run at a time: the result file's block writes
 // and the recorder's block statistics (moments, Welch spectra, cycle counts of ~200
 // columns) go to one each while the integration and the next block's samples go on
-// (docs/performance.md, "Recording on two cores").
+// (docs/performance.md, "Recording on two cores"); the result file's release of the file
+// it replaces runs once on another.
 //
 // The caller hands the job its data before start() and does not touch them again until
 // wait() has returned (the mutex orders the two threads' accesses). The thread starts with

@@ -115,6 +115,7 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   // Removing a file frees its pages, ~3 ms for the drilling case's 21 MB: with the file
   // held open, the name goes now and the pages when the last descriptor closes, which a
   // helper thread does beside the set-up (docs/performance.md, "Issue #18, sixteenth round").
+  // (On NFS the open file's name becomes .nfsXXXX in its directory until that close.)
   if (std::filesystem::exists(path, error)) {
     // A regular file only, never followed through a link nor waited on (a FIFO's open
     // would wait for a writer): anything else, or one not readable, is removed in line.
@@ -141,7 +142,7 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
   }
 }
 
-void ResultFile::close_previous_result() { ::close(previous_result_); }
+void ResultFile::close_previous_result() { ::close(std::exchange(previous_result_, -1)); }
 
 ResultFile::~ResultFile() {
   try {

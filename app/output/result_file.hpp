@@ -231,6 +231,8 @@ class ResultFile {
   }
   void check_usable() const;
   void abandon();
+  /// The release worker's job: closes previous_result_ (then -1).
+  void close_previous_result();
 
   std::string path_, partial_path_;
   hsize_t reserved_samples_ = 0;
@@ -251,10 +253,9 @@ class ResultFile {
   bool published_ = false, closed_ = false;
   std::string failure_;  // the OutputError's message once a write has failed
   std::string failure_cause_;
-  /// The replaced result's descriptor (-1: none), closed by the release worker: the close
-  /// frees the file's pages (see the constructor).
+  /// The replaced result's descriptor (-1: none), closed by the release worker
+  /// (close_previous_result): the close frees the file's pages (see the constructor).
   int previous_result_ = -1;
-  void close_previous_result();
   BackgroundWorker previous_result_release_{[this] { close_previous_result(); }};
   // Writes the last whole blocks (docs/performance.md, "Recording on two cores"), data only:
   // the datasets are extended before a block is handed over. While it runs it is the only

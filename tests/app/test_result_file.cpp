@@ -414,6 +414,13 @@ TEST(ResultFile, AnEarlierFileAtThePathIsRemovedAtOnce) {
     file.close();
   }
   EXPECT_GT(H5Fis_hdf5(output.c_str()), 0);
+  // The replaced file was held open while its name went; it is closed (its pages freed) by
+  // the time the result file is: no descriptor of this process still names it.
+  for (const auto& descriptor : std::filesystem::directory_iterator("/proc/self/fd")) {
+    std::error_code unreadable;  // the iterator's own descriptor, closed by the time it is read
+    const std::string names = std::filesystem::read_symlink(descriptor.path(), unreadable).string();
+    EXPECT_EQ(names.find("replaced.h5 (deleted)"), std::string::npos) << descriptor.path() << " -> " << names;
+  }
   std::filesystem::remove(output);
 
   ASSERT_EQ(mkfifo(output.c_str(), 0600), 0);
