@@ -10,7 +10,6 @@
 #include <fmt/format.h>
 
 #include "app/case/case_definition.hpp"
-#include "app/case/sha256.hpp"
 #include "app/output/output_error.hpp"
 #include "app/output/recorder.hpp"
 #include "app/scene/scene.hpp"
@@ -108,7 +107,7 @@ int equilibrium_command(const EquilibriumOptions& options) {
   // The one sample: the rest state with its reactions.
   {
     ResultFile file(output_path, 1);
-    write_result_metadata(file, definition, sha256_hex(definition.resolved_yaml));
+    write_result_metadata(file, definition, resolved_case_sha256(definition));
     write_constraint_summary(file, scene);
     Recorder recorder(definition, scene, file, nullptr);
     recorder.record(t, scene.initial_state);

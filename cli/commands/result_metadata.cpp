@@ -2,10 +2,13 @@
 
 #include <fmt/format.h>
 
+#include "app/case/sha256.hpp"
 #include "app/output/utc_now.hpp"
 #include "app/version.hpp"
 
 namespace heavesim {
+
+std::string resolved_case_sha256(const CaseDefinition& definition) { return sha256_hex(definition.resolved_yaml); }
 
 void write_result_metadata(ResultFile& file, const CaseDefinition& definition, const std::string& case_sha256) {
   file.set_attribute("/", "heavesim_version", std::string(heavesim_version));

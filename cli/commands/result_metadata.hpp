@@ -7,9 +7,13 @@
 
 namespace heavesim {
 
-/// heavesim_version, case_name, case_sha256 (`case_sha256`: sha256_hex of the resolved
-/// case text, app/case/sha256.hpp), created_utc, complete = 0, units_system, and
-/// /case/yaml (the resolved case text).
+/// The result file's case_sha256: the SHA-256 of the resolved case text, in hex. Apart from
+/// write_result_metadata so that `run` can compute it beside the scene build (OpenSSL's
+/// first digest sets up its providers, ~2 ms).
+std::string resolved_case_sha256(const CaseDefinition& definition);
+
+/// heavesim_version, case_name, case_sha256 (`case_sha256`: resolved_case_sha256 of the
+/// definition), created_utc, complete = 0, units_system, and /case/yaml (the resolved case text).
 void write_result_metadata(ResultFile& file, const CaseDefinition& definition, const std::string& case_sha256);
 
 /// Closed loops: rows, rank, redundant rows, how multipliers were chosen, assembly

@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <future>
 #include <optional>
 #include <vector>
@@ -15,7 +16,6 @@
 
 #include "app/case/case_definition.hpp"
 #include "app/case/case_node.hpp"
-#include "app/case/sha256.hpp"
 #include "cli/commands/commands.hpp"
 #include "cli/commands/command_support.hpp"
 #include "cli/commands/result_metadata.hpp"
@@ -56,8 +56,8 @@ int run_command(const RunOptions& options) {
   // The case's hash on the second core while the scene is built: OpenSSL's first digest
   // sets up its providers, ~2 ms (docs/performance.md, "Issue #18, sixteenth round"). In
   // line where no thread can be started.
-  std::future<std::string> case_sha256 = std::async(std::launch::async | std::launch::deferred,
-                                                    [&definition] { return sha256_hex(definition.resolved_yaml); });
+  std::future<std::string> case_sha256 =
+      std::async(std::launch::async | std::launch::deferred, resolved_case_sha256, std::cref(definition));
 
   // The output place is checked (created) before the scene is built.
   const std::string output_path = prepare_result_path(options.output_path, definition.name);
