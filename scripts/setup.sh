@@ -6,7 +6,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev libsundials-dev libsuitesparse-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev libssl-dev
+  libeigen3-dev libsundials-dev libsuitesparse-dev libhdf5-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev
+  nettle-dev                   # SHA-256 of cases (app/case/sha256.cpp)
   libfftw3-dev                 # the Welch spectra's real transforms (signal/hann_segment.cpp)
   libgtest-dev libgmock-dev libbenchmark-dev
   clang-14 libclang-rt-14-dev  # libFuzzer and the sanitizer runtimes (scripts/fuzz.sh)

@@ -1,17 +1,27 @@
 #include "app/case/sha256.hpp"
 
-#include <openssl/evp.h>
+#include <nettle/sha2.h>
 
-#include <fmt/format.h>
+#include <cstdint>
 
 namespace heavesim {
 
 std::string sha256_hex(const std::string& message) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  EVP_Digest(message.data(), message.size(), digest, &length, EVP_sha256(), nullptr);
-  std::string hex;
-  for (unsigned int i = 0; i < length; ++i) hex += fmt::format("{:02x}", digest[i]);
+  // Nettle's SHA-256 (FIPS 180-4): a plain function, no provider set-up. OpenSSL's EVP
+  // digest, used before, loaded libcrypto (~21,000 relocations: a program linked against it
+  // alone starts in 5.4 ms against 2.5 ms) and set up its providers at the first digest
+  // (~2 ms; docs/performance.md, "Issue #18, seventeenth round").
+  sha256_ctx context;
+  sha256_init(&context);
+  sha256_update(&context, message.size(), reinterpret_cast<const std::uint8_t*>(message.data()));
+  std::uint8_t digest[SHA256_DIGEST_SIZE];
+  sha256_digest(&context, SHA256_DIGEST_SIZE, digest);
+  static constexpr char hex_digits[] = "0123456789abcdef";
+  std::string hex(2 * SHA256_DIGEST_SIZE, '0');
+  for (int i = 0; i < SHA256_DIGEST_SIZE; ++i) {
+    hex[2 * i] = hex_digits[digest[i] >> 4];
+    hex[2 * i + 1] = hex_digits[digest[i] & 0x0f];
+  }
   return hex;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// SHA-256 (OpenSSL EVP) of a text: what identifies the exact input of a result (the
+// SHA-256 (Nettle) of a text: what identifies the exact input of a result (the
 // result file's case_sha256) and of a sweep's run (its hash, for resuming).
 #include <string>
 

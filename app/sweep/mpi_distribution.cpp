@@ -5,6 +5,11 @@
 // dispatcher that would cost a core). At the end rank 0 gathers every rank's records
 // (MPI_Gatherv) and writes the index. Each rank writes its runs' result files itself
 // (DIR must be shared by the ranks' nodes).
+//
+// Built as a module of its own (libheavesim_mpi.so), loaded only by a process that mpirun
+// started (mpi_module.cpp): Open MPI's libraries (libmpi, its runtime, hwloc, libevent,
+// udev) cost every other heavesim process ~3 ms of its start (docs/performance.md, "Issue
+// #18, seventeenth round"). It depends on nothing of heavesim's but the interface's header.
 #include <mpi.h>
 
 #include <cstdint>
@@ -108,11 +113,11 @@ class MpiDistribution final : public TaskDistribution {
 };
 
 }  // namespace
-
-bool started_by_mpirun() {
-  return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");
-}
-
-std::unique_ptr<TaskDistribution> make_mpi_distribution() { return std::make_unique<MpiDistribution>(); }
-
 }  // namespace heavesim
+
+// The module's one entry point, looked up by name (mpi_module.cpp): the ranks of
+// MPI_COMM_WORLD, MPI_Init here. The caller owns the object; its destructor (MPI_Finalize)
+// is this module's code, which stays loaded to the end of the process.
+extern "C" __attribute__((visibility("default"))) heavesim::TaskDistribution* heavesim_make_mpi_distribution() {
+  return new heavesim::MpiDistribution();
+}

@@ -45,7 +45,10 @@ std::unique_ptr<TaskDistribution> make_process_pool(int jobs);
 /// Whether this process was started by mpirun (Open MPI's OMPI_COMM_WORLD_SIZE, or
 /// PMI_SIZE / PMIX_RANK of other launchers and srun).
 bool started_by_mpirun();
-/// The ranks of MPI_COMM_WORLD (MPI_Init here, MPI_Finalize when destroyed).
+/// The ranks of MPI_COMM_WORLD (MPI_Init here, MPI_Finalize when destroyed), from the MPI
+/// module libheavesim_mpi.so (mpi_distribution.cpp) beside the running executable, loaded
+/// here (mpi_module.cpp). Throws std::runtime_error naming the module's path and the
+/// loader's message when it cannot be loaded.
 std::unique_ptr<TaskDistribution> make_mpi_distribution();
 
 }  // namespace heavesim

@@ -107,7 +107,7 @@ int equilibrium_command(const EquilibriumOptions& options) {
   // The one sample: the rest state with its reactions.
   {
     ResultFile file(output_path, 1);
-    write_result_metadata(file, definition, resolved_case_sha256(definition));
+    write_result_metadata(file, definition);
     write_constraint_summary(file, scene);
     Recorder recorder(definition, scene, file, nullptr);
     recorder.record(t, scene.initial_state);

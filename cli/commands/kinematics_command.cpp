@@ -107,7 +107,7 @@ int kinematics_command(const RunOptions& options) {
   const SolverSettings& solver = definition.solver;
   const long intervals = output_interval_count(solver, definition.output.interval);
   ResultFile file(output_path, static_cast<hsize_t>(intervals + 1));
-  write_result_metadata(file, definition, resolved_case_sha256(definition));
+  write_result_metadata(file, definition);
   write_constraint_summary(file, scene);
   file.set_attribute("/", "analysis", std::string("kinematics"));
   file.set_attribute("/", "dof", static_cast<long>(dof.free_directions()));

@@ -8,13 +8,11 @@
 
 namespace heavesim {
 
-std::string resolved_case_sha256(const CaseDefinition& definition) { return sha256_hex(definition.resolved_yaml); }
-
-void write_result_metadata(ResultFile& file, const CaseDefinition& definition, const std::string& case_sha256) {
+void write_result_metadata(ResultFile& file, const CaseDefinition& definition) {
   file.set_attribute("/", "heavesim_version", std::string(heavesim_version));
   file.set_attribute("/", "case_name", definition.name);
   file.set_attribute("/", "case_file", definition.source_path);
-  file.set_attribute("/", "case_sha256", case_sha256);
+  file.set_attribute("/", "case_sha256", sha256_hex(definition.resolved_yaml));
   file.set_attribute("/", "created_utc", utc_now());
   file.set_attribute("/", "complete", 0L);
   file.set_attribute("/", "units_system", std::string("SI"));

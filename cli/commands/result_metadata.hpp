@@ -7,14 +7,10 @@
 
 namespace heavesim {
 
-/// The result file's case_sha256: the SHA-256 of the resolved case text, in hex. Apart from
-/// write_result_metadata so that `run` can compute it beside the scene build (OpenSSL's
-/// first digest sets up its providers, ~2 ms).
-std::string resolved_case_sha256(const CaseDefinition& definition);
-
-/// heavesim_version, case_name, case_sha256 (`case_sha256`: resolved_case_sha256 of the
-/// definition), created_utc, complete = 0, units_system, and /case/yaml (the resolved case text).
-void write_result_metadata(ResultFile& file, const CaseDefinition& definition, const std::string& case_sha256);
+/// heavesim_version, case_name, case_file, case_sha256 (the SHA-256 of the resolved case
+/// text, in hex), created_utc, complete = 0, units_system, frames, and /case/yaml (the
+/// resolved case text).
+void write_result_metadata(ResultFile& file, const CaseDefinition& definition);
 
 /// Closed loops: rows, rank, redundant rows, how multipliers were chosen, assembly
 /// (attributes of /constraints); nothing for a tree.

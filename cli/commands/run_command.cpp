@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
-#include <future>
 #include <optional>
 #include <vector>
 
@@ -53,12 +52,6 @@ int run_command(const RunOptions& options) {
   std::optional<CaseNode> case_tree(resolved_case_tree(options.case_path, options.overrides));
   const CaseDefinition definition = read_case(*case_tree, options.case_path, options.allow_large_runs);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
-  // The case's hash on the second core while the scene is built: OpenSSL's first digest
-  // sets up its providers, ~2 ms (docs/performance.md, "Issue #18, sixteenth round"). In
-  // line where no thread can be started.
-  std::future<std::string> case_sha256 =
-      std::async(std::launch::async | std::launch::deferred, resolved_case_sha256, std::cref(definition));
-
   // The output place is checked (created) before the scene is built.
   const std::string output_path = prepare_result_path(options.output_path, definition.name);
   // The scene is built (and the run-size limits checked, app/scene/run_size.hpp) before
@@ -68,7 +61,7 @@ int run_command(const RunOptions& options) {
   if (!options.quiet && scene.equilibrium) print_equilibrium_summary(scene);
   const SolverSettings& solver = definition.solver;
   ResultFile file(output_path, static_cast<hsize_t>(output_sample_count(solver, definition.output.interval)));
-  write_result_metadata(file, definition, case_sha256.get());
+  write_result_metadata(file, definition);
   write_constraint_summary(file, scene);
 
   std::optional<CsvWriter> csv;
