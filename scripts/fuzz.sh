@@ -121,13 +121,19 @@ first_frames() {  # stdin: sanitizer report(s); stdout: each failing stack's dec
 # CI's run of 2026-11-29 counted such a finding as ours for want of a frame, and replays
 # here of the same class placed them all in libhdf5 (single allocations of 1.9 to 21 GB
 # from damaged lengths in H5C_protect and the variable-length string conversion).
+# When the replay itself crosses the RSS limit first (no stack again: CI of 2026-12-01, a
+# BEMIO input whose 2.7 GB of RSS came before HDF5's 21 GB variable-length conversion), it
+# runs once more with room up to 8 GiB, for the allocation limit to catch the culprit.
 where_found() {
-  local binary=$1 input=$2 report
-  if report=$(ASAN_OPTIONS=${ASAN_OPTIONS//:log_path=*/} "$binary" -runs=1 -rss_limit_mb=2048 -malloc_limit_mb=512 \
-    -timeout=20 "$input" 2>&1); then
-    echo "not reproduced alone"
-    return
-  fi
+  local binary=$1 input=$2 report rss_limit
+  for rss_limit in 2048 8192; do
+    if report=$(ASAN_OPTIONS=${ASAN_OPTIONS//:log_path=*/} "$binary" -runs=1 -rss_limit_mb=$rss_limit \
+      -malloc_limit_mb=512 -timeout=20 "$input" 2>&1); then
+      echo "not reproduced alone"
+      return
+    fi
+    [[ "$report" == *"out-of-memory (used:"* ]] || break
+  done
   echo "$report" | first_frames | head -1
 }
 
