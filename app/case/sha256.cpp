@@ -4,6 +4,9 @@
 
 #include <cstdint>
 
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 namespace heavesim {
 
 std::string sha256_hex(const std::string& message) {
@@ -16,13 +19,7 @@ std::string sha256_hex(const std::string& message) {
   sha256_update(&context, message.size(), reinterpret_cast<const std::uint8_t*>(message.data()));
   std::uint8_t digest[SHA256_DIGEST_SIZE];
   sha256_digest(&context, SHA256_DIGEST_SIZE, digest);
-  static constexpr char hex_digits[] = "0123456789abcdef";
-  std::string hex(2 * SHA256_DIGEST_SIZE, '0');
-  for (int i = 0; i < SHA256_DIGEST_SIZE; ++i) {
-    hex[2 * i] = hex_digits[digest[i] >> 4];
-    hex[2 * i + 1] = hex_digits[digest[i] & 0x0f];
-  }
-  return hex;
+  return fmt::format("{:02x}", fmt::join(digest, ""));
 }
 
 }  // namespace heavesim
