@@ -115,8 +115,11 @@ int HannSegmentTransform::length() const { return static_cast<int>(shared_->coef
 
 double HannSegmentTransform::window_power() const { return shared_->power; }
 
-const std::vector<std::complex<double>>& HannSegmentTransform::transform(const double* samples) {
-  const std::vector<double>& window = shared_->coefficients;
+namespace {
+
+// The thread's scratch holding the L samples' mean removed and the window applied:
+// x_n = (samples_n - mean) w_n, the input of both transforms below.
+AlignedScratch& windowed_segment(const std::vector<double>& window, const double* samples) {
   const std::size_t L = window.size();
   double mean = 0.0;
   for (std::size_t n = 0; n < L; ++n) mean += samples[n];
@@ -124,6 +127,14 @@ const std::vector<std::complex<double>>& HannSegmentTransform::transform(const d
   thread_local AlignedScratch scratch;
   scratch.reserve(L);
   for (std::size_t n = 0; n < L; ++n) scratch.segment[n] = (samples[n] - mean) * window[n];
+  return scratch;
+}
+
+}  // namespace
+
+const std::vector<std::complex<double>>& HannSegmentTransform::transform(const double* samples) {
+  const std::size_t L = shared_->coefficients.size();
+  AlignedScratch& scratch = windowed_segment(shared_->coefficients, samples);
   const fftw_plan plan = plan_of(*shared_);
   transform_.resize(L / 2 + 1);
   // std::complex<double> is laid out as fftw_complex (C++ [complex.numbers]/4). The plan
@@ -139,6 +150,14 @@ const std::vector<std::complex<double>>& HannSegmentTransform::transform(const d
     std::copy_n(reinterpret_cast<const std::complex<double>*>(scratch.bins), L / 2 + 1, transform_.begin());
   }
   return transform_;
+}
+
+void HannSegmentTransform::add_power(const double* samples, double* power_sums) {
+  const std::size_t L = shared_->coefficients.size();
+  AlignedScratch& scratch = windowed_segment(shared_->coefficients, samples);
+  fftw_execute_dft_r2c(plan_of(*shared_), scratch.segment, scratch.bins);  // the scratch is aligned as planned
+  for (std::size_t k = 0; k <= L / 2; ++k)
+    power_sums[k] += scratch.bins[k][0] * scratch.bins[k][0] + scratch.bins[k][1] * scratch.bins[k][1];
 }
 
 }  // namespace heavesim::stats

@@ -24,13 +24,17 @@ class HannSegmentTransform {
   double window_power() const;
   /// X_k, k = 0 .. L/2, of the L samples from `samples` (valid until the next call).
   const std::vector<std::complex<double>>& transform(const double* samples);
+  /// power_sums[k] += |X_k|^2, k = 0 .. L/2, for the L samples from `samples`: the
+  /// transform stays in the calling thread's scratch, so a caller that keeps only the
+  /// periodogram's sums (Welch) holds no bins of its own (a recorder has one per column).
+  void add_power(const double* samples, double* power_sums);
 
  private:
   /// Shared with every transform of the same length: a recorder holds one transform per
   /// recorded column (hundreds), each of which would otherwise take L cosines, L doubles
   /// and a plan.
   HannSegmentLength* shared_ = nullptr;
-  std::vector<std::complex<double>> transform_;  // L/2 + 1 bins, sized by the first transform
+  std::vector<std::complex<double>> transform_;  // L/2 + 1 bins, sized by the first transform()
 };
 
 }  // namespace heavesim::stats

@@ -23,16 +23,26 @@ WelchAccumulator::WelchAccumulator(int segment_length, double sampling_frequency
     : sampling_frequency_(sampling_frequency), segment_transform_(segment_length) {
   if (!(sampling_frequency > 0.0) || !std::isfinite(sampling_frequency))
     throw std::invalid_argument(fmt::format("sampling frequency {} Hz: expected > 0", sampling_frequency));
-  buffer_.resize(segment_length);
-  power_sum_.assign(segment_length / 2 + 1, 0.0);
+}
+
+// The buffer and the sums are made by the first sample, not by the constructor: a recorder
+// makes one accumulator per column before the run, on the thread that then integrates, and
+// its samples arrive later on the thread that computes the statistics, which then also
+// pays for the memory's first touch (docs/performance.md, "Issue #18, eighteenth round").
+void WelchAccumulator::allocate() {
+  const int L = segment_transform_.length();
+  buffer_.resize(L);
+  power_sum_.assign(L / 2 + 1, 0.0);
 }
 
 void WelchAccumulator::add(double x) {
+  if (buffer_.empty()) allocate();
   buffer_[filled_++] = x;
   if (filled_ == static_cast<int>(buffer_.size())) add_segment();
 }
 
 void WelchAccumulator::add(const double* x, std::int64_t count) {
+  if (count > 0 && buffer_.empty()) allocate();
   while (count > 0) {
     const std::int64_t taken = std::min(count, static_cast<std::int64_t>(buffer_.size()) - filled_);
     std::copy_n(x, taken, buffer_.begin() + filled_);
@@ -44,8 +54,7 @@ void WelchAccumulator::add(const double* x, std::int64_t count) {
 }
 
 void WelchAccumulator::add_segment() {
-  const std::vector<std::complex<double>>& transform = segment_transform_.transform(buffer_.data());
-  for (std::size_t k = 0; k < power_sum_.size(); ++k) power_sum_[k] += std::norm(transform[k]);
+  segment_transform_.add_power(buffer_.data(), power_sum_.data());
   ++segments_;
   // 50 % overlap: the segment's second half begins the next one.
   const int half = static_cast<int>(buffer_.size()) / 2;
@@ -54,8 +63,9 @@ void WelchAccumulator::add_segment() {
 }
 
 std::vector<double> WelchAccumulator::frequencies() const {
-  std::vector<double> f(power_sum_.size());
-  for (std::size_t k = 0; k < f.size(); ++k) f[k] = sampling_frequency_ * static_cast<double>(k) / buffer_.size();
+  const int L = segment_transform_.length();
+  std::vector<double> f(L / 2 + 1);
+  for (std::size_t k = 0; k < f.size(); ++k) f[k] = sampling_frequency_ * static_cast<double>(k) / L;
   return f;
 }
 

@@ -11,7 +11,7 @@
 //
 // Streaming: a buffer of L samples; each time it fills, the segment's periodogram is
 // added and the buffer keeps its second half. Memory L + L/2 + 1 numbers, whatever the
-// record's length.
+// record's length, taken at the first sample.
 #include <cstdint>
 #include <limits>
 #include <vector>
@@ -50,6 +50,8 @@ class WelchAccumulator {
  private:
   /// The full buffer's periodogram into the sums; its second half begins the next segment.
   void add_segment();
+  /// Sizes the buffer (L) and the sums (L/2 + 1, zero): at the first sample.
+  void allocate();
   double sampling_frequency_;
   HannSegmentTransform segment_transform_;
   std::vector<double> buffer_, power_sum_;

@@ -2,7 +2,8 @@
 // transform of the mean-removed, Hann-windowed samples written out here, for two lengths
 // whose transforms are alive at the same time and share their windows with others of the
 // same length (the recorder holds hundreds), and the window's power against its closed
-// form sum_n w_n^2 = 3 L / 8 (periodic Hann).
+// form sum_n w_n^2 = 3 L / 8 (periodic Hann); the periodogram's sums (add_power) against
+// the same DFT's squared magnitudes.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -75,6 +76,27 @@ TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
   for (std::thread& thread : threads) thread.join();
   EXPECT_EQ(transforms_done.load(), 4 * 6 * 3);
   EXPECT_EQ(wrong_bins.load(), 0);
+}
+
+// The periodogram's sums as Welch keeps them (add_power: the bins stay in the thread's
+// scratch), added twice onto sums that already hold something, against the squared
+// magnitudes of the direct DFT; a second transform of the same length used in between
+// (the recorder's other columns) changes nothing.
+TEST(HannSegmentTransform, AddedPowerIsTheSquaredMagnitudeOfTheWindowedDft) {
+  const int length = 32;
+  HannSegmentTransform transform(length), other(length);
+  std::vector<double> x(length), y(length);
+  for (int n = 0; n < length; ++n) {
+    x[n] = 1.5 + std::sin(0.9 * n) - 0.3 * std::cos(2.1 * n);
+    y[n] = std::cos(0.2 * n * n);
+  }
+  std::vector<double> sums(length / 2 + 1, 0.5);
+  transform.add_power(x.data(), sums.data());
+  other.transform(y.data());
+  transform.add_power(x.data(), sums.data());
+  const std::vector<std::complex<double>> reference = hann_windowed_dft(x);
+  for (int k = 0; k <= length / 2; ++k)
+    EXPECT_NEAR(sums[k], 0.5 + 2.0 * std::norm(reference[k]), 1e-11 * length * length) << "bin " << k;
 }
 
 TEST(HannSegmentTransform, OddOrTooShortLengthsAreRefused) {

@@ -457,6 +457,27 @@ TEST(WelchSpectrum, RunsOfSamplesFillTheSameSegmentsAsSingleSamples) {
   EXPECT_EQ(by_runs.density(), by_sample.density());
 }
 
+// Before its first whole segment an accumulator has its frequencies f_k = k fs / L
+// (k = 0 .. L/2) and no density; its buffers are made by the first sample (an accumulator
+// per recorded column is made before the run), which must not change what a segment holds.
+TEST(WelchSpectrum, BeforeTheFirstSegmentFrequenciesButNoDensity) {
+  const int segment = 16;
+  const double fs = 8.0;
+  WelchAccumulator welch(segment, fs);
+  std::vector<double> f = welch.frequencies();
+  ASSERT_EQ(f.size(), std::size_t(segment / 2 + 1));
+  EXPECT_EQ(f[0], 0.0);
+  EXPECT_DOUBLE_EQ(f[segment / 2], fs / 2.0);
+  EXPECT_TRUE(welch.density().empty());
+  welch.add(nullptr, 0);  // nothing added: still nothing
+  for (int i = 0; i < segment - 1; ++i) welch.add(1.0);
+  EXPECT_EQ(welch.segments(), 0);
+  EXPECT_TRUE(welch.density().empty());
+  welch.add(1.0);  // a constant: its mean removed, nothing left in any bin
+  EXPECT_EQ(welch.segments(), 1);
+  for (double s : welch.density()) EXPECT_EQ(s, 0.0);
+}
+
 // A sine on a bin f0 = k0 fs / L: the periodic Hann window leaks it into bins k0 - 1,
 // k0, k0 + 1 only (its transform is 0 at every other bin), and Parseval puts exactly
 // A^2 / 2 in them; the density peaks at f0 (Tp = 1 / f0).
