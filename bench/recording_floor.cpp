@@ -7,12 +7,13 @@
 //  * hdf5_one_dataset: the same 12,001 x 206 doubles as ONE chunked dataset (chunks of
 //    1,024 rows, as the result file's), one H5Dwrite from memory, the file closed: the
 //    bytes through HDF5 and the page cache, with no layout to speak of.
-//  * result_file_drilling_layout: the result file itself (app/output/result_file.hpp)
-//    with the drilling run's 100 series, their units and descriptions, 12,001 samples
-//    written row by row through sample_row()/end_sample() (its block writer thread
-//    included), closed: the writer's whole cost, with no evaluation of the samples and no
-//    statistics.
-// Wall time (UseRealTime: the result file writes on a second thread). Run:
+//  * result_file_drilling_layout/samples:1: the result file itself
+//    (app/output/result_file.hpp) with the drilling run's 100 series, their units and
+//    descriptions, 12,001 samples written row by row through sample_row()/end_sample()
+//    (its block writer thread included), closed: the writer's whole cost, with no
+//    evaluation of the samples and no statistics. samples:0: the same layout, no sample.
+// Wall time (UseRealTime: the result file writes on a second thread); each iteration
+// writes a new file (the last one removed untimed). Run:
 //   build/bench/heavesim_recording_floor --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
 #include <hdf5.h>
@@ -56,6 +57,15 @@ std::string output_path(const char* name) {
 // Sample k, column c: a value that changes (no page of zeros for the file system to skip).
 double sample_value(hsize_t k, hsize_t c) { return 1.0 + 1e-3 * static_cast<double>(k) + static_cast<double>(c); }
 
+// Each iteration writes a new file: the one before is removed untimed (truncating a 20 MB
+// file in place would be timed in one benchmark and not the other, whose result file
+// replaces its predecessor on a helper thread).
+void remove_untimed(benchmark::State& state, const std::string& path) {
+  state.PauseTiming();
+  std::filesystem::remove(path);
+  state.ResumeTiming();
+}
+
 void hdf5_one_dataset(benchmark::State& state) {
   const hsize_t columns = static_cast<hsize_t>(total_columns(drilling_series_widths()));
   std::vector<double> values(drilling_samples * columns);
@@ -63,14 +73,16 @@ void hdf5_one_dataset(benchmark::State& state) {
     for (hsize_t c = 0; c < columns; ++c) values[k * columns + c] = sample_value(k, c);
   const std::string path = output_path("heavesim_recording_floor_one_dataset.h5");
   for (auto _ : state) {
+    remove_untimed(state, path);
     hdf5::Handle file(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT));
     const hsize_t dimensions[2] = {drilling_samples, columns};
     const hsize_t chunk[2] = {ResultFile::block_rows, columns};
     hdf5::Handle space(H5Screate_simple(2, dimensions, nullptr));
     hdf5::Handle create(H5Pcreate(H5P_DATASET_CREATE));
-    H5Pset_chunk(create.get(), 2, chunk);
-    hdf5::Handle dataset(
-        H5Dcreate2(file.get(), "/values", H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT, create.get(), H5P_DEFAULT));
+    const bool chunked = create.valid() && H5Pset_chunk(create.get(), 2, chunk) >= 0;
+    hdf5::Handle dataset(chunked ? H5Dcreate2(file.get(), "/values", H5T_NATIVE_DOUBLE, space.get(), H5P_DEFAULT,
+                                              create.get(), H5P_DEFAULT)
+                                 : -1);
     if (!dataset.valid() ||
         H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0 ||
         !dataset.close() || !file.close()) {
@@ -82,28 +94,38 @@ void hdf5_one_dataset(benchmark::State& state) {
   state.counters["MB"] = static_cast<double>(values.size() * sizeof(double)) / 1e6;
 }
 
+// The result file with the drilling run's 100 series, reserved for its 12,001 samples;
+// state.range(0) = 1 writes them all, 0 none (the layout alone: create, attributes, the
+// first flush, close).
 void result_file_drilling_layout(benchmark::State& state) {
+  const bool write_samples = state.range(0) == 1;
   const std::vector<int> widths = drilling_series_widths();
   const std::string path = output_path("heavesim_recording_floor_result_file.h5");
   for (auto _ : state) {
-    ResultFile file(path, drilling_samples);
-    for (std::size_t s = 0; s < widths.size(); ++s)
-      file.add_series(fmt::format("/series_{}/values", s), widths[s] == 1 ? 0 : widths[s], "m",
-                      "a series of the drilling output's shape");
-    const hsize_t width = file.staging_width();
-    for (hsize_t k = 0; k < drilling_samples; ++k) {
-      double* row = file.sample_row();
-      for (hsize_t c = 0; c < width; ++c) row[c] = sample_value(k, c);
-      file.end_sample();
+    remove_untimed(state, path);
+    try {
+      ResultFile file(path, drilling_samples);
+      for (std::size_t s = 0; s < widths.size(); ++s)
+        file.add_series(fmt::format("/series_{}/values", s), widths[s] == 1 ? 0 : widths[s], "m",
+                        "a series of the drilling output's shape");
+      const hsize_t width = file.staging_width();
+      for (hsize_t k = 0; write_samples && k < drilling_samples; ++k) {
+        double* row = file.sample_row();
+        for (hsize_t c = 0; c < width; ++c) row[c] = sample_value(k, c);
+        file.end_sample();
+      }
+      file.close();
+    } catch (const OutputError& error) {  // the file is removed by ~ResultFile or below
+      state.SkipWithError(error.what());
+      break;
     }
-    file.close();
   }
   std::filesystem::remove(path);
   state.counters["series"] = static_cast<double>(widths.size());
 }
 
 BENCHMARK(hdf5_one_dataset)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(result_file_drilling_layout)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(result_file_drilling_layout)->ArgName("samples")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace heavesim::bench

@@ -4,8 +4,8 @@ and leaves the functions that bound them, from Linux uprobes (Debian's linux-per
 
     /usr/bin/python3 scripts/run_phases.py [--binary build/heavesim] [--runs 9] CASE.yaml [--set k=v ...]
 
-A uprobe costs ~1-2 us per hit and the bounding functions are entered a few times a run,
-so the run keeps its speed (unlike a sampling profile with call graphs, which doubles the
+A uprobe is hit a few times a run (the bounding functions are entered once or twice), so
+the run keeps its speed (unlike a sampling profile with call graphs, which doubles the
 drilling run's wall time and cannot say when a thread waits). Per run: process start (exec
 to the first read_case), case and scenes (the case read, the scene built, the second scene
 for the samples' evaluation), the recorder's constructor (channels, the result file's
@@ -73,17 +73,26 @@ def main():
     binary = os.path.realpath(arguments.binary)
     addresses = function_addresses(binary)
     group = "heavesim_phases"
-    names = {}
+    names = {}  # perf's event name -> "<function key>>" (entry) or "<function key><" (return)
     perf("probe", "-q", "-d", f"{group}:*")
     try:
         for key, address in addresses.items():
             for suffix, probe in (("entry", address), ("return", address + "%return")):
-                event = f"{key}_{suffix}"
-                added = perf("probe", "-q", "-x", binary, "-a", f"{group}:{event}={probe}")
+                added = perf("probe", "-q", "-x", binary, "-a", f"{group}:{key}_{suffix}={probe}")
                 if added.returncode != 0:
                     sys.exit(f"run_phases: perf probe failed (root and linux-perf needed): {added.stderr.strip()}")
-                # perf names a return probe's event "<event>__return"
-                names[event + ("__return" if suffix == "return" else "")] = key + (">" if suffix == "entry" else "<")
+        # The events as perf named them (recent versions append "__return" to a return
+        # probe's name, older ones keep the name given).
+        for line in perf("probe", "-l", f"{group}:*", check=True).stdout.splitlines():
+            event = line.split()[0].split(":")[-1] if line.strip() else ""
+            for key in addresses:
+                if event.startswith(f"{key}_entry"):
+                    names[event] = key + ">"
+                elif event.startswith(f"{key}_return"):
+                    names[event] = key + "<"
+        if len(names) != 2 * len(addresses):
+            sys.exit(f"run_phases: perf probe -l lists {sorted(names)}, expected an entry and a return of each of "
+                     f"{sorted(addresses)}")
         durations = {name: [] for name, _, _ in PHASES}
         totals = []
         with tempfile.TemporaryDirectory() as directory:
@@ -106,18 +115,26 @@ def main():
                         times["exit"] = time
                     elif tid == main_thread and event in names:
                         times.setdefault(names[event], time)  # the first entry and the first return
+                if "exec" not in times or "exit" not in times:
+                    print("run_phases: a run without its exec or exit event, left out", file=sys.stderr)
+                    continue
                 for name, start, end in PHASES:
                     if start in times and end in times:
                         durations[name].append(1e3 * (times[end] - times[start]))
                 totals.append(1e3 * (times["exit"] - times["exec"]))
     finally:
         perf("probe", "-q", "-d", f"{group}:*")
+    if not totals:
+        sys.exit("run_phases: no run was timed")
     total = statistics.median(totals)
-    print(f"{arguments.runs} runs of {arguments.case}: median wall {total:.1f} ms (exec to exit)")
+    print(f"{len(totals)} runs of {arguments.case}: median wall {total:.1f} ms (exec to exit)")
     for name, _, _ in PHASES:
         if durations[name]:
             median = statistics.median(durations[name])
-            print(f"  {median:7.1f} ms  {100 * median / total:5.1f} %  {name}")
+            runs = "" if len(durations[name]) == len(totals) else f"  (in {len(durations[name])} runs only)"
+            print(f"  {median:7.1f} ms  {100 * median / total:5.1f} %  {name}{runs}")
+        else:
+            print(f"      --- ms          {name}: not seen (the run took another path)")
 
 
 if __name__ == "__main__":

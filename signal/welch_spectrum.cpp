@@ -31,8 +31,8 @@ WelchAccumulator::WelchAccumulator(int segment_length, double sampling_frequency
 // pays for the memory's first touch (docs/performance.md, "Issue #18, eighteenth round").
 void WelchAccumulator::allocate() {
   const int L = segment_transform_.length();
-  buffer_.resize(L);
   power_sum_.assign(L / 2 + 1, 0.0);
+  buffer_.resize(L);  // last: an empty buffer is what add() takes for "not made yet"
 }
 
 void WelchAccumulator::add(double x) {

@@ -52,9 +52,10 @@ TEST(HannSegmentTransform, TransformsOfTwoLengthsAliveTogetherAreTheWindowedDft)
 }
 
 // Transforms made, used and dropped on several threads at once (a sweep's runs, the
-// recorder's helper threads): the lengths here are used by no other test, so their FFTW
-// windows and plans are made by whichever thread comes first while the others wait, then
-// used by all. Every transform is the direct DFT; tests/scripts/test_threads.py runs this
+// recorder's helper threads), through transform() and add_power(): the lengths here are
+// used by no other test, so their FFTW windows and plans are made by whichever thread
+// comes first while the others wait, then used by all. Every transform is the direct DFT
+// and every periodogram its squared magnitude; tests/scripts/test_threads.py runs this
 // under Helgrind.
 TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
   std::atomic<int> wrong_bins{0}, transforms_done{0};
@@ -70,6 +71,11 @@ TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
           const std::vector<std::complex<double>> reference = hann_windowed_dft(x);
           for (std::size_t k = 0; k < reference.size(); ++k)
             if (!(k < X.size() && std::abs(X[k] - reference[k]) < 1e-12 * length)) ++wrong_bins;
+          // The periodogram's sums through the thread's own scratch (Welch's path).
+          std::vector<double> sums(length / 2 + 1, 0.0);
+          transform.add_power(x.data(), sums.data());
+          for (std::size_t k = 0; k < reference.size(); ++k)
+            if (!(std::abs(sums[k] - std::norm(reference[k])) < 1e-11 * length * length)) ++wrong_bins;
           ++transforms_done;
         }
     });
@@ -79,24 +85,27 @@ TEST(HannSegmentTransform, TransformsOnSeveralThreadsAtOnceAreTheWindowedDft) {
 }
 
 // The periodogram's sums as Welch keeps them (add_power: the bins stay in the thread's
-// scratch), added twice onto sums that already hold something, against the squared
-// magnitudes of the direct DFT; a second transform of the same length used in between
-// (the recorder's other columns) changes nothing.
+// scratch), added for two different segments onto sums that already hold something,
+// against the squared magnitudes of the direct DFT; another transform of the same length
+// adding its own segment in between (the recorder's other columns) changes nothing.
 TEST(HannSegmentTransform, AddedPowerIsTheSquaredMagnitudeOfTheWindowedDft) {
   const int length = 32;
   HannSegmentTransform transform(length), other(length);
-  std::vector<double> x(length), y(length);
+  std::vector<double> x(length), z(length), y(length);
   for (int n = 0; n < length; ++n) {
     x[n] = 1.5 + std::sin(0.9 * n) - 0.3 * std::cos(2.1 * n);
+    z[n] = -0.7 + 2.0 * std::cos(0.35 * n + 0.2);
     y[n] = std::cos(0.2 * n * n);
   }
-  std::vector<double> sums(length / 2 + 1, 0.5);
+  std::vector<double> sums(length / 2 + 1, 0.5), other_sums(length / 2 + 1, 0.0);
   transform.add_power(x.data(), sums.data());
-  other.transform(y.data());
-  transform.add_power(x.data(), sums.data());
-  const std::vector<std::complex<double>> reference = hann_windowed_dft(x);
-  for (int k = 0; k <= length / 2; ++k)
-    EXPECT_NEAR(sums[k], 0.5 + 2.0 * std::norm(reference[k]), 1e-11 * length * length) << "bin " << k;
+  other.add_power(y.data(), other_sums.data());
+  transform.add_power(z.data(), sums.data());
+  const std::vector<std::complex<double>> X = hann_windowed_dft(x), Z = hann_windowed_dft(z), Y = hann_windowed_dft(y);
+  for (int k = 0; k <= length / 2; ++k) {
+    EXPECT_NEAR(sums[k], 0.5 + std::norm(X[k]) + std::norm(Z[k]), 1e-11 * length * length) << "bin " << k;
+    EXPECT_NEAR(other_sums[k], std::norm(Y[k]), 1e-11 * length * length) << "bin " << k;
+  }
 }
 
 TEST(HannSegmentTransform, OddOrTooShortLengthsAreRefused) {

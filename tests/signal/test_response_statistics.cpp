@@ -459,7 +459,9 @@ TEST(WelchSpectrum, RunsOfSamplesFillTheSameSegmentsAsSingleSamples) {
 
 // Before its first whole segment an accumulator has its frequencies f_k = k fs / L
 // (k = 0 .. L/2) and no density; its buffers are made by the first sample (an accumulator
-// per recorded column is made before the run), which must not change what a segment holds.
+// per recorded column is made before the run), which must not change what a segment holds:
+// a constant's density is L/2 + 1 zeros (that the sums grow with a signal's power is
+// the white-noise and sine tests' business).
 TEST(WelchSpectrum, BeforeTheFirstSegmentFrequenciesButNoDensity) {
   const int segment = 16;
   const double fs = 8.0;
@@ -475,6 +477,7 @@ TEST(WelchSpectrum, BeforeTheFirstSegmentFrequenciesButNoDensity) {
   EXPECT_TRUE(welch.density().empty());
   welch.add(1.0);  // a constant: its mean removed, nothing left in any bin
   EXPECT_EQ(welch.segments(), 1);
+  ASSERT_EQ(welch.density().size(), std::size_t(segment / 2 + 1));
   for (double s : welch.density()) EXPECT_EQ(s, 0.0);
 }
 
