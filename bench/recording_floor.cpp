@@ -20,6 +20,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -43,11 +44,7 @@ std::vector<int> drilling_series_widths() {
   return widths;
 }
 
-int total_columns(const std::vector<int>& widths) {
-  int total = 0;
-  for (int width : widths) total += width;
-  return total;
-}
+int total_columns(const std::vector<int>& widths) { return std::accumulate(widths.begin(), widths.end(), 0); }
 
 std::string output_path(const char* name) {
   const char* directory = std::getenv("HEAVESIM_BENCH_DIR");

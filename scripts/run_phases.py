@@ -62,6 +62,14 @@ def function_addresses(binary):
     return found
 
 
+def phase_event(event):
+    """"<key>>" for a probe "<key>_entry", "<key><" for "<key>_return" (recent perf names a
+    return probe "<key>_return__return", older perf keeps the name given)."""
+    if "_entry" in event:
+        return event.split("_entry")[0] + ">"
+    return event.split("_return")[0] + "<"
+
+
 def perf(*arguments, **options):
     return subprocess.run(["perf", *arguments], capture_output=True, text=True, **options)
 
@@ -73,7 +81,6 @@ def main():
     binary = os.path.realpath(arguments.binary)
     addresses = function_addresses(binary)
     group = "heavesim_phases"
-    names = {}  # perf's event name -> "<function key>>" (entry) or "<function key><" (return)
     perf("probe", "-q", "-d", f"{group}:*")
     try:
         for key, address in addresses.items():
@@ -81,18 +88,6 @@ def main():
                 added = perf("probe", "-q", "-x", binary, "-a", f"{group}:{key}_{suffix}={probe}")
                 if added.returncode != 0:
                     sys.exit(f"run_phases: perf probe failed (root and linux-perf needed): {added.stderr.strip()}")
-        # The events as perf named them (recent versions append "__return" to a return
-        # probe's name, older ones keep the name given).
-        for line in perf("probe", "-l", f"{group}:*", check=True).stdout.splitlines():
-            event = line.split()[0].split(":")[-1] if line.strip() else ""
-            for key in addresses:
-                if event.startswith(f"{key}_entry"):
-                    names[event] = key + ">"
-                elif event.startswith(f"{key}_return"):
-                    names[event] = key + "<"
-        if len(names) != 2 * len(addresses):
-            sys.exit(f"run_phases: perf probe -l lists {sorted(names)}, expected an entry and a return of each of "
-                     f"{sorted(addresses)}")
         durations = {name: [] for name, _, _ in PHASES}
         totals = []
         with tempfile.TemporaryDirectory() as directory:
@@ -113,8 +108,8 @@ def main():
                         times["exec"] = time
                     elif tid == main_thread and event == "sched_process_exit":
                         times["exit"] = time
-                    elif tid == main_thread and event in names:
-                        times.setdefault(names[event], time)  # the first entry and the first return
+                    elif tid == main_thread and event.startswith(tuple(f"{key}_" for key in addresses)):
+                        times.setdefault(phase_event(event), time)  # the first entry and the first return
                 if "exec" not in times or "exit" not in times:
                     print("run_phases: a run without its exec or exit event, left out", file=sys.stderr)
                     continue
