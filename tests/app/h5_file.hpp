@@ -14,9 +14,18 @@ namespace heavesim {
 class H5File {
  public:
   /// Opens read-only; a file written in HDF5's SWMR mode and left open by a killed
-  /// writer opens as a SWMR reader.
+  /// writer opens as a SWMR reader; a file this process writes (a ResultFile, which takes
+  /// no file lock) opens without taking one either: HDF5 refuses a locking second open.
   explicit H5File(const std::string& path) {
-    H5E_BEGIN_TRY { file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT); } H5E_END_TRY;
+    H5E_BEGIN_TRY {
+      file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+      if (file_ < 0) {
+        const hid_t unlocked = H5Pcreate(H5P_FILE_ACCESS);
+        if (H5Pset_file_locking(unlocked, false, true) >= 0) file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY, unlocked);
+        H5Pclose(unlocked);
+      }
+    }
+    H5E_END_TRY;
     if (file_ < 0) file_ = H5Fopen(path.c_str(), H5F_ACC_RDONLY | H5F_ACC_SWMR_READ, H5P_DEFAULT);
   }
   ~H5File() {
@@ -84,6 +93,33 @@ class H5File {
     H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data());
     H5Dclose(dataset);
     return values;
+  }
+
+  /// Where a chunked dataset's chunks are in the file: (first row, address, bytes) for
+  /// each allocated chunk, in HDF5's index order (H5Dget_chunk_info, HDF5 1.10.5).
+  struct ChunkPlace {
+    hsize_t first_row;
+    haddr_t address;
+    hsize_t bytes;
+    bool operator==(const ChunkPlace&) const = default;
+  };
+  std::vector<ChunkPlace> chunk_places(const std::string& path) const {
+    std::vector<ChunkPlace> places;
+    const hid_t dataset = H5Dopen2(file_, path.c_str(), H5P_DEFAULT);
+    const hid_t space = H5Dget_space(dataset);
+    hsize_t chunks = 0;
+    H5Dget_num_chunks(dataset, space, &chunks);
+    for (hsize_t k = 0; k < chunks; ++k) {
+      hsize_t offset[2] = {0, 0};
+      unsigned filter_mask = 0;
+      haddr_t address = HADDR_UNDEF;
+      hsize_t bytes = 0;
+      if (H5Dget_chunk_info(dataset, space, k, offset, &filter_mask, &address, &bytes) >= 0)
+        places.push_back({offset[0], address, bytes});
+    }
+    H5Sclose(space);
+    H5Dclose(dataset);
+    return places;
   }
 
  private:

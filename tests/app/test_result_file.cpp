@@ -354,6 +354,66 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   std::filesystem::remove(output);
 }
 
+// A whole block goes to disk as its chunk (H5Dwrite_chunk: no selection, no conversion)
+// over the place allocated for it at the layout. The test reads back, through HDF5's own
+// index (H5Dget_chunk_info on a second identifier of the open file), where every chunk is
+// after the layout and after three whole blocks: the same places and sizes (nothing
+// allocated or re-indexed while samples are written, the file's SIGKILL design,
+// result_file.hpp), and the rows read back are the ones written (a chunk written past
+// its end would overwrite what was written after it: the next chunk, or the series after).
+TEST(ResultFile, WholeBlocksAreWrittenOverTheChunksTheLayoutAllocated) {
+  const std::string output = temporary("chunks.h5");
+  const int widths[2] = {0, 3};
+  const long samples = 3 * static_cast<long>(ResultFile::block_rows);  // whole blocks only
+  const auto value = [](long k, int s, int c) { return 0.5 * k - 7.0 * s + c; };
+  std::vector<std::vector<H5File::ChunkPlace>> after_layout(2), after_samples(2);
+  {
+    ResultFile file(output, samples);
+    int ids[2];
+    for (int s = 0; s < 2; ++s)
+      ids[s] = file.add_series("/series_" + std::to_string(s), widths[s], "-", "test pattern");
+    file.flush();  // the layout on disk, published
+    {
+      const H5File reader(output);
+      ASSERT_TRUE(reader.ok());
+      for (int s = 0; s < 2; ++s) after_layout[s] = reader.chunk_places("/series_" + std::to_string(s));
+    }
+    double row[3];
+    for (long k = 0; k < samples; ++k) {
+      for (int s = 0; s < 2; ++s) {
+        for (int c = 0; c < std::max(widths[s], 1); ++c) row[c] = value(k, s, c);
+        file.append(ids[s], row);
+      }
+      file.end_sample();
+    }
+    file.flush();
+    {
+      const H5File reader(output);
+      ASSERT_TRUE(reader.ok());
+      for (int s = 0; s < 2; ++s) after_samples[s] = reader.chunk_places("/series_" + std::to_string(s));
+    }
+    file.close();
+  }
+  for (int s = 0; s < 2; ++s) {
+    const std::size_t width = static_cast<std::size_t>(std::max(widths[s], 1));
+    ASSERT_EQ(after_layout[s].size(), 3u) << "series " << s << ": a chunk for each block, allocated at the layout";
+    EXPECT_EQ(after_samples[s], after_layout[s]) << "series " << s;
+    for (const H5File::ChunkPlace& place : after_layout[s])
+      EXPECT_EQ(place.bytes, ResultFile::block_rows * width * sizeof(double)) << "series " << s;
+  }
+  const H5File file(output);
+  ASSERT_TRUE(file.ok());
+  for (int s = 0; s < 2; ++s) {
+    const std::vector<double> values = file.read("/series_" + std::to_string(s));
+    const int width = std::max(widths[s], 1);
+    ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width));
+    for (long k = 0; k < samples; ++k)
+      for (int c = 0; c < width; ++c)
+        ASSERT_EQ(values[k * width + c], value(k, s, c)) << "series " << s << " sample " << k << " column " << c;
+  }
+  std::filesystem::remove(output);
+}
+
 // A record attribute (a compound of doubles, as a channel's statistics) written at the
 // layout and again at the end: with the same fields it is overwritten in place; with
 // fields of the same count and size but another name it must be written anew, names and
