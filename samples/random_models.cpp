@@ -154,10 +154,11 @@ RandomState random_state(const Model& model, std::mt19937_64& random) {
   return state;
 }
 
-RandomTreeAndState random_tree_and_state(std::mt19937_64& random, int bodies, bool added_inertia) {
+RandomTreeAndState random_tree_and_state(std::mt19937_64& random, int bodies, bool added_inertia, bool chain) {
   RandomTreeOptions options;
   options.bodies = bodies;
   options.added_inertia = added_inertia;
+  options.chain = chain;
   Model model = random_tree(random, options);
   RandomState state = random_state(model, random);  // after the tree: the same draws as calling both in turn
   return {std::move(model), std::move(state)};

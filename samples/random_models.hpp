@@ -40,11 +40,12 @@ struct RandomState {
 RandomState random_state(const Model& model, std::mt19937_64& random);
 
 /// A random tree of `bodies` bodies (options otherwise default; added inertia on every
-/// third body when asked) and a random state on it, drawn in that order from `random`.
+/// third body when asked; a serial chain when asked) and a random state on it, drawn in
+/// that order from `random`.
 struct RandomTreeAndState {
   Model model;
   RandomState state;
 };
-RandomTreeAndState random_tree_and_state(std::mt19937_64& random, int bodies, bool added_inertia);
+RandomTreeAndState random_tree_and_state(std::mt19937_64& random, int bodies, bool added_inertia, bool chain = false);
 
 }  // namespace heavesim::samples

@@ -116,7 +116,18 @@ const VectorX& articulated_body_forward_dynamics(const Model& model, Data& data,
     data.acceleration_world[i] = a;
   }
   data.stages.accelerations_computed();
+  data.articulated_evaluation = data.stages.evaluation;
   return data.qdd;
+}
+
+bool articulated_body_joint_wrenches(const Model& model, Data& data) {
+  if (!(data.stages.current & StageMarker::accelerations) || data.articulated_evaluation != data.stages.evaluation)
+    return false;
+  for (int i = 1; i < model.num_links(); ++i)
+    data.joint_wrench_world[i] = data.articulated_inertia_world[i] * data.acceleration_world[i] +
+                                 data.articulated_bias_world[i];
+  data.stages.reactions_computed();
+  return true;
 }
 
 const VectorX& aba(const Model& model, Data& data, const VectorX& q, const VectorX& v, const VectorX& tau,

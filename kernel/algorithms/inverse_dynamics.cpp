@@ -20,6 +20,7 @@ const VectorX& inverse_dynamics(const Model& model, Data& data, const VectorX& q
     if (joint.parent > 0) data.joint_wrench_world[joint.parent] += data.joint_wrench_world[i];
   }
   data.stages.accelerations_overwritten();  // acceleration_world and the wrenches are those of `qdd`
+  data.articulated_evaluation = 0;          // no longer the articulated-body pass's
   return data.tau;
 }
 

@@ -145,6 +145,10 @@ struct Data {
   Matrix6X aba_U;                                 // 6 x nv: U_i = I^A_i S_i
   std::vector<SmallMatrix> aba_D_inverse;         // per link, nv_i x nv_i (not formed for a floating base: ABA solves for its qdd)
   VectorX aba_u;                                  // nv: u_i = tau_i - S_i^T p^A_i
+  /// The evaluation (stages.evaluation) whose accelerations the last articulated-body pass
+  /// computed, its I^A and p^A standing with them; 0 once an inverse-dynamics pass has
+  /// overwritten the accelerations. articulated_body_joint_wrenches reads it.
+  long articulated_evaluation = 0;
 };
 
 /// Throws std::logic_error (naming what is stale) unless every stage in `required` (bits

@@ -161,6 +161,11 @@ void MultibodySystem::minimum_norm_multipliers(const VectorX& generalized_force)
 }
 
 void MultibodySystem::compute_joint_reactions(double t) {
+  // Without a constraint's loads, the articulated-body pass that gave the accelerations
+  // holds every joint's wrench already (f = I^A a + p^A): no second pass. A recorded sample
+  // of the drilling run spent ~10 % of its evaluation in that pass (docs/performance.md,
+  // "Issue #18, nineteenth round").
+  if (!model_->has_constraints() && articulated_body_joint_wrenches(*model_, data_)) return;
   total_loads_ = forces_.external_force_world;
   if (model_->has_constraints()) {
     tau_total_ = forces_.joint_force;

@@ -19,13 +19,10 @@ namespace {
 TEST(ArticulatedBody, InverseDynamicsOfItsAccelerationsReturnsTheForces) {
   std::mt19937_64 random(41);
   for (int trial = 0; trial < 10; ++trial) {
-    samples::RandomTreeOptions options;
-    options.bodies = 15;
-    options.added_inertia = trial % 2 == 1;
-    options.chain = trial % 3 == 0;
-    const Model model = samples::random_tree(random, options);
+    const samples::RandomTreeAndState drawn = samples::random_tree_and_state(random, 15, trial % 2 == 1, trial % 3 == 0);
+    const Model& model = drawn.model;
+    const samples::RandomState& state = drawn.state;
     Data data(model);
-    const samples::RandomState state = samples::random_state(model, random);
     const VectorX qdd = aba(model, data, state.q, state.v, state.tau, state.external_forces);
     const VectorX tau = rnea(model, data, state.q, state.v, qdd, state.external_forces);
     // ABA is backward stable: the residual is a few eps times the forces involved

@@ -1,15 +1,19 @@
 // Joint reactions against statics and Newton's second law: a hanging chain at rest
 // carries the weight below each joint; a swinging pendulum's pin pushes with
-// m (a_com - g) and, being a passive hinge, transmits no moment about its pin.
+// m (a_com - g) and, being a passive hinge, transmits no moment about its pin; the
+// articulated-body pass's wrenches (f = I^A a + p^A) against the inverse-dynamics pass's on
+// random trees, and when they may not be used.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "kernel/algorithms/articulated_body.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
 #include "kernel/algorithms/kinematics.hpp"
 #include "samples/hanging_chain.hpp"
 #include "samples/planar_chains.hpp"
+#include "samples/random_models.hpp"
 
 namespace heavesim {
 namespace {
@@ -58,6 +62,38 @@ TEST(JointReactions, SwingingPendulumPinForceIsMassTimesCentreOfMassAcceleration
   // Moments about the pin: the weight's and the inertial moments balance about +Y (no
   // applied torque) and the rod's symmetric inertia leaves nothing about X or Z.
   EXPECT_LT(reaction.moment_world.norm(), 1e-12);
+}
+
+TEST(JointReactions, TheArticulatedBodyPassesWrenchesAreTheInverseDynamicsPasses) {
+  // Two algorithms for the same wrenches: f_i = I^A_i a_i + p^A_i from the articulated-body
+  // pass just made, and the inverse-dynamics pass at its accelerations (compute_joint_wrenches),
+  // on random trees with every joint type (free joints among them), added inertia, joint
+  // forces and external forces on every link.
+  std::mt19937_64 random(73);
+  for (int trial = 0; trial < 10; ++trial) {
+    const samples::RandomTreeAndState drawn = samples::random_tree_and_state(random, 15, trial % 2 == 1, trial % 3 == 0);
+    const Model& model = drawn.model;
+    const samples::RandomState& state = drawn.state;
+    Data data(model);
+    update_positions(model, data, state.q);
+    update_velocities(model, data, state.q, state.v);
+    articulated_body_forward_dynamics(model, data, state.tau, state.external_forces);
+    ASSERT_TRUE(articulated_body_joint_wrenches(model, data)) << "trial " << trial;
+    EXPECT_TRUE(data.stages.current & StageMarker::reactions);
+    const AlignedVector<Force> from_articulated = data.joint_wrench_world;
+    compute_joint_wrenches(model, data, state.external_forces);
+    double scale = 1.0;  // the largest wrench: a joint near the root carries forces of order 100
+    for (int i = 1; i < model.num_links(); ++i) scale = std::max(scale, data.joint_wrench_world[i].vector().norm());
+    for (int i = 1; i < model.num_links(); ++i)
+      EXPECT_LT((from_articulated[i].vector() - data.joint_wrench_world[i].vector()).norm(), 1e-12 * scale)
+          << "trial " << trial << " joint " << i;
+    // The inverse-dynamics pass overwrote the accelerations: the articulated-body wrenches
+    // are no longer the evaluation's, and a new evaluation has none until its own pass.
+    EXPECT_FALSE(articulated_body_joint_wrenches(model, data));
+    update_positions(model, data, state.q);
+    update_velocities(model, data, state.q, state.v);
+    EXPECT_FALSE(articulated_body_joint_wrenches(model, data));
+  }
 }
 
 }  // namespace
