@@ -33,10 +33,9 @@ namespace {
 
 constexpr const char* case_path = HEAVESIM_SOURCE_DIR "/cases/drilling.yaml";
 
-/// The drilling case, its scene, and the run's (t, y) at every output time.
+/// The drilling case and the run's (t, y) at every output time.
 struct DrillingSamples {
   CaseDefinition definition = load_case(case_path);
-  Scene scene = build_scene(definition);
   std::vector<double> times;
   std::vector<VectorX> states;
 

@@ -1,7 +1,7 @@
 #pragma once
 // Decides which channels a case records and writes them at every output time:
 // only what the case asks for is evaluated (reactions cost a product a link after ABA,
-// an extra inverse-dynamics pass with loops).
+// an extra inverse-dynamics pass with loops, CRBA or a prescribed motion).
 #include <array>
 #include <functional>
 #include <limits>

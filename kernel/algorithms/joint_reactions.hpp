@@ -17,8 +17,10 @@ struct JointReaction {
 };
 
 /// Fills data.joint_wrench_world for the accelerations in data.qdd (call after
-/// forward dynamics with the same external forces). This is the only extra pass
-/// reactions cost, and it runs only when reactions are asked for.
+/// forward dynamics with the same external forces): an inverse-dynamics pass. A tree
+/// whose accelerations ABA gave needs none (articulated_body_joint_wrenches); loops,
+/// forward dynamics by CRBA and a prescribed motion take this pass, only when reactions
+/// are asked for.
 void compute_joint_wrenches(const Model& model, Data& data, ExternalForces external_forces_world = {});
 
 /// Reaction of joint i (>= 1) from data.joint_wrench_world.

@@ -116,8 +116,6 @@ class MultibodySystem {
   Data& mutable_data() { return data_; }
   const SystemSettings& settings() const { return settings_; }
   const AppliedForces& applied_forces() const { return forces_; }
-  /// Applied external forces plus constraint wrenches, per link (after evaluate()).
-  const AlignedVector<Force>& total_external_forces() const { return total_loads_; }
   const std::vector<std::unique_ptr<ForceElement>>& force_elements() const { return elements_; }
   /// Offset of element e's internal states in y.
   int state_offset(std::size_t element) const { return state_offsets_[element]; }
