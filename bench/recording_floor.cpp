@@ -12,11 +12,17 @@
 //    descriptions, 12,001 samples written row by row through sample_row()/end_sample()
 //    (its block writer thread included), closed: the writer's whole cost, with no
 //    evaluation of the samples and no statistics. samples:0: the same layout, no sample.
+//  * pwrite_pieces/pieces:N: the same 19.8 MB written to a new file with N pwrite calls
+//    of equal size and nothing else (no HDF5): what a system call costs beyond the
+//    copy into the page cache. The result file wrote a block as one pwrite a series (1,200
+//    a run) until its blocks' chunks were laid side by side ("Issue #18, twentieth round").
 // Wall time (UseRealTime: the result file writes on a second thread); each iteration
 // writes a new file (the last one removed untimed). Run:
 //   build/bench/heavesim_recording_floor --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 #include <benchmark/benchmark.h>
+#include <fcntl.h>
 #include <hdf5.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -121,8 +127,32 @@ void result_file_drilling_layout(benchmark::State& state) {
   state.counters["series"] = static_cast<double>(widths.size());
 }
 
+void pwrite_pieces(benchmark::State& state) {
+  const hsize_t pieces = static_cast<hsize_t>(state.range(0));
+  const hsize_t columns = static_cast<hsize_t>(total_columns(drilling_series_widths()));
+  const hsize_t bytes = drilling_samples * columns * sizeof(double) / pieces * pieces;
+  const std::vector<char> values(bytes, 1);
+  const std::string path = output_path("heavesim_recording_floor_pwrite.bin");
+  for (auto _ : state) {
+    remove_untimed(state, path);
+    const int descriptor = ::open(path.c_str(), O_CREAT | O_WRONLY | O_TRUNC | O_CLOEXEC, 0644);
+    bool written = descriptor >= 0;
+    const hsize_t piece = bytes / pieces;
+    for (hsize_t p = 0; written && p < pieces; ++p)
+      written = ::pwrite(descriptor, values.data() + p * piece, piece, static_cast<off_t>(p * piece)) ==
+                static_cast<ssize_t>(piece);
+    if (descriptor >= 0 && ::close(descriptor) != 0) written = false;
+    if (!written) {
+      state.SkipWithError(("cannot write " + path).c_str());
+      break;
+    }
+  }
+  std::filesystem::remove(path);
+}
+
 BENCHMARK(hdf5_one_dataset)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(result_file_drilling_layout)->ArgName("samples")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(pwrite_pieces)->ArgName("pieces")->Arg(1)->Arg(12)->Arg(100)->Arg(1200)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace heavesim::bench

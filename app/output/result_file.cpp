@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <numeric>
 #include <stdexcept>
+#include <system_error>
 #include <utility>
 
 #include "io/hdf5/hdf5_error.hpp"
@@ -31,13 +32,39 @@ constexpr const char* samples_written_name = "samples_written";
 constexpr const char* reserved_room_name = "_reserved_room";
 constexpr hsize_t root_room_bytes = 8192, summary_room_bytes = 32768;
 
+// Metadata (object headers, chunk indexes) is taken from blocks of this size instead of
+// HDF5's 2 kB: with small blocks, the metadata that growing the series makes lands between
+// their chunks, and a block's chunks no longer lie side by side (arrange_chunks_by_block).
+// The drilling run's 12 blocks of 100 chunks lie in 16 runs with 64 KiB (block 0 in 5, the
+// metadata of the first growth among them), and the run makes 108 pwrites in all (2 kB:
+// 296; 16 KiB: 140); the file grows by the unused part of the last block (~30 kB). Larger
+// blocks gain nothing more and put a small file over a limit (tests/app/test_write_failures.cpp).
+constexpr hsize_t metadata_block_bytes = hsize_t{64} << 10;
+
+// A descriptor of the file HDF5 writes, for the whole blocks' raw chunk data (write_raw),
+// or -1 (HDF5 then writes every chunk itself). A duplicate of the POSIX driver's own, so it
+// is the same file whatever happens to the path; only with no user block, where an HDF5
+// address is a file offset (HDF5 1.10 reports chunk addresses without the user block,
+// HDFGroup/hdf5 issue #3003).
+int raw_data_descriptor(hid_t file, hid_t access) {
+  const Handle creation(H5Fget_create_plist(file));
+  hsize_t user_block = 1;
+  void* handle = nullptr;
+  if (!creation.valid() || H5Pget_userblock(creation.get(), &user_block) < 0 || user_block != 0 ||
+      H5Pget_driver(access) != H5FD_SEC2 || H5Fget_vfd_handle(file, access, &handle) < 0 || handle == nullptr)
+    return -1;
+  return ::fcntl(*static_cast<int*>(handle), F_DUPFD_CLOEXEC, 0);
+}
+
 // The writer takes no HDF5 file lock (H5Pset_file_locking, HDF5 1.10.7): a reader may
 // open the file while the run writes it without HDF5_USE_FILE_LOCKING=FALSE. What it
 // reads then is what a SIGKILL at that moment would leave, whole samples up to
 // samples_written (the header), because nothing structural changes during the run.
-Handle unlocked_file_access() {
+Handle result_file_access() {
   Handle access(H5Pcreate(H5P_FILE_ACCESS));
-  if (H5Pset_file_locking(access.get(), false, true) < 0) access.reset();
+  if (H5Pset_file_locking(access.get(), false, true) < 0 ||
+      H5Pset_meta_block_size(access.get(), metadata_block_bytes) < 0)
+    access.reset();
   return access;
 }
 
@@ -127,7 +154,7 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
     }
     if (previous_result_ >= 0) previous_result_release_.start();
   }
-  const Handle access = unlocked_file_access();
+  const Handle access = result_file_access();
   file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
   if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
   text_type_ = hdf5::variable_text_type();
@@ -140,6 +167,7 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
     const Handle room_space(H5Screate_simple(1, &bytes, nullptr));
     write_attribute(open_object(object).get(), reserved_room_name, H5T_NATIVE_UCHAR, room_space.get(), room.data());
   }
+  raw_data_ = raw_data_descriptor(file_.get(), access.get());  // last: nothing after it throws
 }
 
 void ResultFile::close_previous_result() { ::close(std::exchange(previous_result_, -1)); }
@@ -164,10 +192,17 @@ ResultFile::~ResultFile() {
   }
 }
 
-void ResultFile::fail(const std::string& action) {
-  failure_cause_ = hdf5::last_error();
-  failure_ = OutputError(path_, action, failure_cause_).what();
-  throw OutputError(path_, action, failure_cause_);
+void ResultFile::fail(const std::string& action) { fail(action, hdf5::last_error()); }
+
+void ResultFile::fail_with_errno(const std::string& action) {
+  // The message of errno's value, read once (std::strerror may use a buffer every thread shares).
+  fail(action, std::generic_category().message(errno));
+}
+
+void ResultFile::fail(const std::string& action, const std::string& cause) {
+  failure_cause_ = cause;
+  failure_ = OutputError(path_, action, cause).what();
+  throw OutputError(path_, action, cause);
 }
 
 void ResultFile::check_usable() const {
@@ -182,6 +217,7 @@ void ResultFile::abandon() {
     series.dataset.abandon();
   }
   file_.abandon();
+  if (raw_data_ >= 0) ::close(std::exchange(raw_data_, -1));
 }
 
 Handle ResultFile::open_object(const std::string& object_path) {
@@ -345,13 +381,20 @@ void ResultFile::write_text(const std::string& dataset_path, const std::string& 
 int ResultFile::add_series(const std::string& dataset_path, int columns, const std::string& units,
                            const std::string& description) {
   ready_to_write();
+  // A dataset made once the layout is published would change the file's structure while
+  // readers (and a SIGKILL) may find it half made (the header).
+  if (published_) throw std::logic_error("ResultFile: a series added after the layout was published: " + dataset_path);
   const int rank = columns == 0 ? 1 : 2;
-  const hsize_t initial[2] = {reserved_samples_, static_cast<hsize_t>(columns)};
+  // No row: arrange_chunks_by_block() grows every series to its reservation a block at a
+  // time before the layout is published (or, after a flush or a sample, it has: full length).
+  const hsize_t rows = chunks_arranged_ ? reserved_samples_ : 0;
+  const hsize_t initial[2] = {rows, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
   const hsize_t chunk[2] = {block_rows, static_cast<hsize_t>(std::max(columns, 1))};
   const Handle space(H5Screate_simple(rank, initial, maximum));
   const Handle create(H5Pcreate(H5P_DATASET_CREATE));
-  // Chunks allocated now and never filled: see the header (no structural change later).
+  // Chunks allocated as the dataset grows to its reservation (arrange_chunks_by_block),
+  // and never filled: see the header (no structural change after the layout).
   const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
                           H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
                           H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0;
@@ -363,15 +406,15 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.dataset = std::move(dataset);
   series.columns = columns;
   series.width = static_cast<hsize_t>(std::max(columns, 1));
-  series.extent = reserved_samples_;
-  series.buffer.assign(block_rows * series.width, 0.0);
-  series.last_block.assign(block_rows * series.width, 0.0);
+  series.extent = rows;
   // The staging's layout is the series' (a row of each side by side): fixed before a sample.
   if (buffered_samples_ > 0 || rows_on_disk_ > 0)
     throw std::logic_error("ResultFile: a series added after samples: " + dataset_path);
   series.staging_offset = staging_width_;
   staging_width_ += series.width;
   staging_.resize(staged_rows * staging_width_);  // no sample before the layout stands (resize: amortized, not a fill per series)
+  building_block_.reset();  // made for the whole layout when first needed
+  last_block_.reset();
   series_.push_back(std::move(series));
   const int id = static_cast<int>(series_.size()) - 1;
   const hid_t object = series_[id].dataset.get();
@@ -388,13 +431,22 @@ void ResultFile::append(int series_id, const double* row) {
   std::copy_n(row, series_[series_id].width, sample_row(series_id));
 }
 
+void ResultFile::make_blocks() {
+  if (building_block_) return;
+  // Not filled: a fill was 3.3 MB of stores (and page faults) on the integrating thread
+  // before the first step; a block's rows are written before anything reads them.
+  building_block_ = std::make_unique_for_overwrite<double[]>(block_rows * staging_width_);
+  last_block_ = std::make_unique_for_overwrite<double[]>(block_rows * staging_width_);
+}
+
 void ResultFile::move_staged_rows_to_blocks() {
+  make_blocks();
   if (staged_samples_ == 0) return;
   if (staged_samples_ > buffered_samples_) throw std::logic_error("ResultFile: more samples staged than buffered");
   const hsize_t first = buffered_samples_ - staged_samples_;
   for (Series& series : series_) {
     const double* from = staging_.data() + series.staging_offset;
-    double* to = series.buffer.data() + first * series.width;
+    double* to = building_block_.get() + block_offset(series) + first * series.width;
     const hsize_t width = series.width;
     stats::call_with_fixed_width<1, 2, 3, 4, 6>(static_cast<std::ptrdiff_t>(width), [&](auto fixed) {
       copy_strided_rows<decltype(fixed)::value>(from, staging_width_, to, staged_samples_, width);
@@ -419,7 +471,7 @@ void ResultFile::end_sample() {
   // the one before must be on disk first (and a failure of it is thrown here).
   ready_to_write();
   extend_series(rows_on_disk_ + block_rows);  // structural changes stay on this thread
-  for (Series& series : series_) series.buffer.swap(series.last_block);
+  std::swap(building_block_, last_block_);
   handed_first_row_ = rows_on_disk_;
   rows_on_disk_ += block_rows;
   buffered_samples_ = 0;
@@ -433,15 +485,91 @@ void ResultFile::end_sample() {
 
 void ResultFile::write_last_blocks() {
   hdf5::report_errors_by_return_codes();  // on this thread too
-  for (Series& series : series_) write_rows(series, series.last_block.data(), handed_first_row_, block_rows);
+  write_whole_block(last_block_.get(), handed_first_row_, block_rows);
+}
+
+void ResultFile::arrange_chunks_by_block() {
+  if (chunks_arranged_) return;
+  chunks_arranged_ = true;
+  // Early allocation gives a series all its chunks at its creation, so each series' chunks
+  // lay together and a block was one pwrite a series: 1,200 for the drilling run, ~5 us
+  // each on this virtual machine beyond the bytes' copy (docs/performance.md, "Issue #18,
+  // twentieth round"). Growing all series a block at a time allocates block k's chunks
+  // one after another, series by series, and a block is then a few pwrites. The growth
+  // is structural, but the layout is not published yet: after it, nothing is.
+  for (hsize_t rows = block_rows;; rows += block_rows) {
+    const hsize_t step = std::min(rows, reserved_samples_);
+    for (Series& series : series_) {
+      if (series.extent >= step) continue;
+      set_extent(series, step, "cannot create result file");
+    }
+    if (step == reserved_samples_) break;
+  }
+}
+
+void ResultFile::write_whole_block(const double* block, hsize_t first_row, hsize_t rows) {
+  // The run of series (consecutive in the block, so in memory too) whose chunks of this
+  // block follow one another in the file.
+  haddr_t run_address = HADDR_UNDEF;
+  hsize_t run_bytes = 0;
+  const double* run_data = nullptr;
+  const auto write_run = [&] {
+    if (run_bytes > 0) write_raw(run_data, run_bytes, run_address);
+    run_bytes = 0;
+  };
+  const hsize_t offset[2] = {first_row, 0};
+  for (Series& series : series_) {
+    const double* data = block + block_offset(series);
+    const hsize_t bytes = chunk_bytes(series);
+    // The chunk as the layout allocated it: unfiltered, at its full size.
+    unsigned filter_mask = 0;
+    haddr_t address = HADDR_UNDEF;
+    hsize_t stored_bytes = 0;
+    const bool in_place = raw_data_ >= 0 && first_row % block_rows == 0 &&
+                          H5Dget_chunk_info_by_coord(series.dataset.get(), offset, &filter_mask, &address,
+                                                     &stored_bytes) >= 0 &&
+                          address != HADDR_UNDEF && filter_mask == 0 && stored_bytes == bytes;
+    if (!in_place) {
+      write_run();
+      write_rows(series, data, first_row, rows);
+      continue;
+    }
+    if (run_bytes > 0 && address == run_address + run_bytes) {
+      run_bytes += bytes;
+      continue;
+    }
+    write_run();
+    run_address = address;
+    run_bytes = bytes;
+    run_data = data;
+  }
+  write_run();
+}
+
+void ResultFile::write_raw(const double* data, hsize_t bytes, haddr_t address) {
+  const char* from = reinterpret_cast<const char*>(data);
+  while (bytes > 0) {
+    const ssize_t written = ::pwrite(raw_data_, from, bytes, static_cast<off_t>(address));
+    if (written < 0 && errno == EINTR) continue;
+    if (written < 0) fail_with_errno("cannot write result file");
+    if (written == 0) fail("cannot write result file", "nothing was written");
+    from += written;
+    bytes -= static_cast<hsize_t>(written);
+    address += static_cast<haddr_t>(written);
+  }
+}
+
+void ResultFile::set_extent(Series& series, hsize_t rows, const char* action) {
+  const hsize_t size[2] = {rows, static_cast<hsize_t>(series.columns)};
+  check(H5Dset_extent(series.dataset.get(), size) >= 0, action);
+  series.extent = rows;
 }
 
 void ResultFile::extend_series(hsize_t rows) {
+  arrange_chunks_by_block();
   for (Series& series : series_) {
     if (series.extent >= rows) continue;
-    const hsize_t new_size[2] = {rows, static_cast<hsize_t>(series.columns)};
-    check(H5Dset_extent(series.dataset.get(), new_size) >= 0, "cannot write result file");
-    series.extent = rows;
+    set_extent(series, rows, "cannot write result file");
     extended_since_commit_ = true;
   }
 }
@@ -450,13 +578,14 @@ void ResultFile::write_rows(Series& series, const double* rows_data, hsize_t fir
   const int rank = series.columns == 0 ? 1 : 2;
   if (rows == block_rows && first % block_rows == 0) {
     // A whole chunk (block_rows rows of the full width, row-major as the chunk is stored),
-    // allocated at creation: written straight over its place in the file (H5Dwrite_chunk,
+    // allocated at the layout, that write_whole_block did not find where it expected (or a
+    // result file without its raw descriptor): written straight over its place (H5Dwrite_chunk,
     // HDF5 1.10.3). The chunk keeps its address (no filter, same size), so the index does
     // not change; no dataspace, selection or type conversion is built for it, which cost
     // more than the write on the block writer's thread (docs/performance.md, "Issue #18,
     // nineteenth round"). The bytes are the file type's: H5T_NATIVE_DOUBLE both.
     const hsize_t offset[2] = {first, 0};
-    check(H5Dwrite_chunk(series.dataset.get(), H5P_DEFAULT, 0, offset, block_rows * series.width * sizeof(double),
+    check(H5Dwrite_chunk(series.dataset.get(), H5P_DEFAULT, 0, offset, chunk_bytes(series),
                          rows_data) >= 0,
           "cannot write result file");
     return;
@@ -477,7 +606,15 @@ void ResultFile::write_block(hsize_t rows) {
   settle();
   move_staged_rows_to_blocks();  // the row of a sample still being built stays staged, first
   extend_series(rows_on_disk_ + rows);
-  for (Series& series : series_) write_rows(series, series.buffer.data(), rows_on_disk_, rows);
+  double* const block = building_block_.get();
+  // At a chunk's start (the run's last block) whole chunks too, the rows past `rows`
+  // zeros: they are past samples_written, a later write of the block replaces them, and
+  // close() cuts the series at the last sample (a block's rows were ~100 pwrites).
+  if (rows_on_disk_ % block_rows == 0)
+    for (const Series& series : series_)
+      std::fill(block + block_offset(series) + rows * series.width,
+                block + block_offset(series) + block_rows * series.width, 0.0);
+  write_whole_block(block, rows_on_disk_, rows);
   rows_on_disk_ += rows;
   buffered_samples_ = 0;
 }
@@ -490,6 +627,7 @@ void ResultFile::commit() {
     samples_written_ = rows_on_disk_;
     extended_since_commit_ = false;
   }
+  if (!published_) arrange_chunks_by_block();
   flush_file();
   last_commit_ = std::chrono::steady_clock::now();
   if (!published_) publish();
@@ -504,12 +642,7 @@ void ResultFile::flush() {
 }
 
 void ResultFile::publish() {
-  if (std::rename(partial_path_.c_str(), path_.c_str()) != 0) {
-    const std::string cause = std::strerror(errno);
-    failure_cause_ = cause;
-    failure_ = OutputError(path_, "cannot create result file", cause).what();
-    throw OutputError(path_, "cannot create result file", cause);
-  }
+  if (std::rename(partial_path_.c_str(), path_.c_str()) != 0) fail_with_errno("cannot create result file");
   published_ = true;
 }
 
@@ -530,10 +663,7 @@ void ResultFile::close() {
     }
     // An early stop: series end where the samples do (an orderly stop leaves no unwritten rows).
     for (Series& series : series_) {
-      if (series.extent == samples_written_) continue;
-      const hsize_t size[2] = {samples_written_, static_cast<hsize_t>(series.columns)};
-      check(H5Dset_extent(series.dataset.get(), size) >= 0, "cannot write result file");
-      series.extent = samples_written_;
+      if (series.extent != samples_written_) set_extent(series, samples_written_, "cannot write result file");
     }
     flush_file();
     for (Series& series : series_) {
@@ -542,6 +672,7 @@ void ResultFile::close() {
       check(series.dataset.close(), "cannot close result file");
     }
     check(file_.close(), "cannot close result file");
+    if (raw_data_ >= 0 && ::close(std::exchange(raw_data_, -1)) != 0) fail_with_errno("cannot close result file");
   } catch (...) {
     abandon();
     closed_ = true;

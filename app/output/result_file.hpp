@@ -14,12 +14,15 @@
 //    the recorded end of file ("addr overflow" on read). Appending by extending every
 //    dataset as it goes (the former design) therefore broke at ~20 % of the write
 //    points of a flush.
-//  * So nothing structural changes while the run writes samples: every series is
-//    created at its final length (`reserved_samples`, known from t_end and the output
-//    interval) with its chunks allocated at creation (H5D_ALLOC_TIME_EARLY) but not
-//    filled (H5D_FILL_TIME_NEVER: no write, the file is sparse). A flush then only
-//    overwrites raw data in place and afterwards the fixed-size `samples_written`
-//    attribute in place: no allocation, no index change, no header moves.
+//  * So nothing structural changes while the run writes samples: before the layout is
+//    published every series is grown to its final length (`reserved_samples`, known from
+//    t_end and the output interval), a block of every series at a time, each growth
+//    allocating the new chunks (H5D_ALLOC_TIME_EARLY) but not filling them
+//    (H5D_FILL_TIME_NEVER: no write, the file is sparse); a block's chunks thus lie side
+//    by side, in the order of the series, and a whole block is written as raw bytes over
+//    them in one pwrite a run of adjacent chunks. A flush then only overwrites raw data in
+//    place and afterwards the fixed-size `samples_written` attribute in place: no
+//    allocation, no index change, no header moves.
 //  * The layout itself (every dataset, attribute and the first flush) is written to
 //    "<path>.partial", renamed to <path> once it is on disk: the name never points at a
 //    half-built file.
@@ -39,11 +42,13 @@
 //    exists from the layout on and is overwritten in place; the end-of-run attributes
 //    are created in room reserved in the root's and /summary's headers.
 // An orderly end (close) shrinks every series to `samples_written`; after SIGKILL the
-// series keep their reserved length and the rows past `samples_written` are unwritten.
+// series keep their reserved length and the rows past `samples_written` are unwritten
+// (or zeros: the part of a block written at a flush mid-block that no sample reached).
 //
 // Every HDF5 call is checked: a failure throws OutputError naming the file and the
 // system's cause, and the file is then left as the last complete flush wrote it.
 #include <chrono>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -56,7 +61,8 @@ namespace heavesim {
 class ResultFile {
  public:
   /// Creates "<path>.partial" (replacing any file at `path`); throws OutputError if it
-  /// cannot. Series get `reserved_samples` rows at creation (0: grown as written).
+  /// cannot. Series have `reserved_samples` rows from when the layout is published (the
+  /// first flush; 0: grown as written).
   explicit ResultFile(const std::string& path, hsize_t reserved_samples = 0);
   /// Never throws: closes a published file (reporting nothing), abandons a failed one,
   /// removes one that was never published. Call close() to hear about failures.
@@ -113,18 +119,20 @@ class ResultFile {
   /// buffered (buffered_samples()). Moves the staged rows into the blocks first.
   const double* block(int series) {
     move_staged_rows_to_blocks();
-    return series_[series].buffer.data();
+    return building_block_.get() + block_offset(series_[series]);
   }
   /// The series' last whole block (block_rows rows), which end_sample() handed to the
-  /// block writer. It stays untouched, and may be read on another thread, until
+  /// block writer (valid once a whole block has been ended). It stays untouched, and may
+  /// be read on another thread, until
   /// end_sample() ends the next whole block: the two blocks trade places then (no copy).
-  const double* last_block(int series) const { return series_[series].last_block.data(); }
+  const double* last_block(int series) const { return last_block_.get() + block_offset(series_[series]); }
   /// Whole samples in the block, not yet written.
   hsize_t buffered_samples() const { return buffered_samples_; }
   /// Copies one row (max(columns, 1) values) into sample_row(series).
   void append(int series, const double* row);
   /// Ends one sample (a row filled in every series). The rows go to disk only here, a
-  /// block of `block_rows` samples at a time, one write a series, on a second thread
+  /// block of `block_rows` samples at a time (a chunk of each series, their chunks side by
+  /// side in the file: a pwrite for each run of them), on a second thread
   /// (the block writer) while the next block is filled; `samples_written` is
   /// raised (a commit: the count, then a file flush) after a block only when it is the
   /// first, when `commit_interval_s` of wall time has passed since the last commit, or
@@ -157,9 +165,7 @@ class ResultFile {
     int columns = 0;
     hsize_t width = 1;   // values a row: max(columns, 1)
     hsize_t extent = 0;  // rows the dataset has (reserved or grown)
-    std::vector<double> buffer;      // block_rows rows, row-major, sized once
-    std::vector<double> last_block;  // the last whole block written, sized once
-    hsize_t staging_offset = 0;      // of its row in a staged sample
+    hsize_t staging_offset = 0;  // of its row in a staged sample
     /// The attributes written through the series' id, kept open with the type and number
     /// of values they were made with: the end of a run overwrites the statistics of every
     /// series, and looking each up again (exists, open, compare the stored type and shape)
@@ -182,6 +188,14 @@ class ResultFile {
   /// The staged samples' rows into the series' blocks, each series' rows one sequential
   /// run; the row being built (a flush between its appends) moves to the first place.
   void move_staged_rows_to_blocks();
+  /// Where a series' rows start in a block: the series' blocks lie side by side in the
+  /// order of the series, block_rows rows of each, as their chunks do in the file.
+  static hsize_t block_offset(const Series& series) { return block_rows * series.staging_offset; }
+  /// The two blocks (the one being built and the last whole one), made when first needed
+  /// and not filled (every row is written before it is read); add_series, which comes
+  /// before any sample, drops them.
+  void make_blocks();
+  std::unique_ptr<double[]> building_block_, last_block_;  // block_rows * staging_width_ values each
   std::vector<double> staging_;   // staged_rows samples, staging_width_ values each
   hsize_t staging_width_ = 0;     // sum of the series' widths
   hsize_t staged_samples_ = 0;    // whole samples staged, not yet in the blocks
@@ -201,8 +215,13 @@ class ResultFile {
                      const std::vector<double>& values);
   /// The compound type of set_record_attribute for these field names (made on first use).
   hid_t record_type(const std::vector<std::string>& fields);
-  /// Every series at least `rows` long (extended_since_commit_ when one grows).
+  /// Every series at least `rows` long (extended_since_commit_ when one grows), after
+  /// arrange_chunks_by_block().
   void extend_series(hsize_t rows);
+  /// The series' dataset `rows` long (its extent recorded); a failure is `action`'s.
+  void set_extent(Series& series, hsize_t rows, const char* action);
+  /// The bytes of a series' chunk: block_rows rows of its width.
+  static hsize_t chunk_bytes(const Series& series) { return block_rows * series.width * sizeof(double); }
   /// Rows [first, first + rows) of a series from `rows_data` (the dataset is long enough).
   void write_rows(Series& series, const double* rows_data, hsize_t first, hsize_t rows);
   /// The block writer's job: every series' last whole block at handed_first_row_.
@@ -224,8 +243,24 @@ class ResultFile {
   void commit();
   void flush_file();
   void publish();
-  /// Records the failure (the file is not written again) and throws it.
+  /// Grows every series from its first block to `reserved_samples`, a block of every
+  /// series at a time, so that each block's chunks lie side by side in the file in the
+  /// order of the series (see write_whole_block); once, before the layout is published.
+  void arrange_chunks_by_block();
+  /// A block as whole chunks over the places the layout allocated (the block's rows past
+  /// `rows`, if any, already zeros): one pwrite for each run of series whose chunks are
+  /// adjacent in the file. Where the block is not a chunk (`first_row` not a multiple of
+  /// block_rows, after a flush mid-block) or a chunk is not as the layout made it
+  /// (unallocated, another size), its `rows` rows go through write_rows.
+  void write_whole_block(const double* block, hsize_t first_row, hsize_t rows);
+  /// `bytes` of raw chunk data at file offset `address`, through raw_data_.
+  void write_raw(const double* data, hsize_t bytes, haddr_t address);
+  /// Records the failure (the file is not written again) and throws it: the cause is
+  /// HDF5's last error, or `cause`.
   [[noreturn]] void fail(const std::string& action);
+  [[noreturn]] void fail(const std::string& action, const std::string& cause);
+  /// fail() with the system's message for errno.
+  [[noreturn]] void fail_with_errno(const std::string& action);
   void check(bool succeeded, const std::string& action) {
     if (!succeeded) fail(action);
   }
@@ -249,6 +284,14 @@ class ResultFile {
   hsize_t handed_first_row_ = 0;  // the first row of the block in the block writer's hands
   hsize_t samples_written_ = 0;   // rows committed (the root attribute)
   bool extended_since_commit_ = false;
+  bool chunks_arranged_ = false;  // arrange_chunks_by_block() has run
+  /// A duplicate of HDF5's descriptor of the file, for the whole blocks' raw chunk data
+  /// (-1: none, every chunk through HDF5). HDF5 holds no raw data of the file (no chunk
+  /// cache, no filter), so bytes written here beside it are what H5Dwrite_chunk would
+  /// have written; they are on disk before the commit that counts them (settle()). Its
+  /// writes are pwrite calls, as HDF5's are (tests/app/test_interrupted_runs.cpp kills
+  /// a writer at each of them).
+  int raw_data_ = -1;
   std::chrono::steady_clock::time_point last_commit_ = std::chrono::steady_clock::now();
   bool published_ = false, closed_ = false;
   std::string failure_;  // the OutputError's message once a write has failed

@@ -14,8 +14,11 @@
 #include <cmath>
 #include <csignal>
 #include <filesystem>
+#include <mutex>
 #include <random>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "app/output/result_file.hpp"
 #include "tests/app/h5_file.hpp"
@@ -23,15 +26,23 @@
 
 extern char** environ;
 
-// Every write HDF5 makes goes through pwrite (its POSIX driver). A process that arms
-// this counter is killed at its n-th write from then on, exactly as SIGKILL would stop
-// it between two system calls: the file then holds the first n - 1 writes and nothing
-// else. Unarmed (the default, and every other test) it only forwards the call.
+// Every write to a result file goes through pwrite: HDF5's (its POSIX driver) and the
+// result file's own raw chunk writes (ResultFile::write_raw). A process that arms this
+// counter is killed at its n-th write from then on, exactly as SIGKILL would stop it
+// between two system calls: the file then holds the first n - 1 writes and nothing else.
+// A test that sets recorded_writes gets every write's (offset, bytes). Unarmed (the
+// default, and every other test) it only forwards the call.
 namespace {
 long writes_before_kill = -1;
-}
+std::mutex recorded_writes_mutex;  // the block writer's thread writes too
+std::vector<std::pair<off_t, size_t>>* recorded_writes = nullptr;
+}  // namespace
 extern "C" ssize_t pwrite(int descriptor, const void* buffer, size_t size, off_t offset) {
   if (writes_before_kill >= 0 && writes_before_kill-- == 0) kill(getpid(), SIGKILL);
+  {
+    const std::lock_guard lock(recorded_writes_mutex);
+    if (recorded_writes != nullptr) recorded_writes->emplace_back(offset, size);
+  }
   return syscall(SYS_pwrite64, descriptor, buffer, size, offset);
 }
 
@@ -95,6 +106,48 @@ std::string whole_samples_problem(const std::string& path) {
   if (!std::isnan(energy_minimum) && energy_minimum != 2.0) return "unreadable statistics of /signals/energy";
   if (complete == 1 && (time_minimum != 1.0 || energy_minimum != 2.0)) return "complete = 1 without the statistics";
   return "";
+}
+
+// The writer's three series (1 + 3 + 1 columns) lay each block's chunks side by side, so
+// a block is ONE pwrite of 1024 x 5 doubles at the first series' chunk (not one a series,
+// ResultFile::write_whole_block), the last, partial block (552 samples) too; and what was
+// written reads back (whole_samples_problem). Fails if the raw path is not taken (the
+// writes would be 8 kB, 24 kB, 8 kB) or the chunks are not adjacent.
+TEST(ResultFileWrites, AWholeBlockIsOnePwriteOverItsSeriesChunksSideBySide) {
+  const std::string path = temporary("one_write_a_block.h5");
+  std::vector<std::pair<off_t, size_t>> writes;
+  {
+    const std::lock_guard lock(recorded_writes_mutex);
+    recorded_writes = &writes;
+  }
+  write_run(path);
+  {
+    const std::lock_guard lock(recorded_writes_mutex);
+    recorded_writes = nullptr;
+  }
+  EXPECT_EQ(whole_samples_problem(path), "");
+  const H5File file(path);
+  ASSERT_TRUE(file.ok());
+  const std::vector<H5File::ChunkPlace> time = file.chunk_places("/time"),
+                                        position = file.chunk_places("/bodies/b/position"),
+                                        energy = file.chunk_places("/signals/energy");
+  ASSERT_EQ(time.size(), 3u);
+  ASSERT_EQ(position.size(), 3u);
+  ASSERT_EQ(energy.size(), 3u);
+  const size_t block_bytes = ResultFile::block_rows * 5 * sizeof(double);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(position[k].address, time[k].address + time[k].bytes) << "block " << k;
+    EXPECT_EQ(energy[k].address, position[k].address + position[k].bytes) << "block " << k;
+    long at_block = 0, at_a_series_chunk = 0;
+    for (const auto& [offset, bytes] : writes) {
+      if (static_cast<haddr_t>(offset) == time[k].address && bytes == block_bytes) ++at_block;
+      for (const H5File::ChunkPlace* place : {&time[k], &position[k], &energy[k]})
+        if (static_cast<haddr_t>(offset) == place->address && bytes == place->bytes) ++at_a_series_chunk;
+    }
+    EXPECT_EQ(at_block, 1) << "block " << k << ": writes of the whole block at its first chunk";
+    EXPECT_EQ(at_a_series_chunk, 0) << "block " << k << ": writes of one series' chunk";
+  }
+  std::filesystem::remove(path);
 }
 
 TEST(InterruptedRuns, AWriterKilledAtEveryWriteLeavesWholeSamples) {

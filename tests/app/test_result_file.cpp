@@ -354,13 +354,15 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   std::filesystem::remove(output);
 }
 
-// A whole block goes to disk as its chunk (H5Dwrite_chunk: no selection, no conversion)
-// over the place allocated for it at the layout. The test reads back, through HDF5's own
-// index (H5Dget_chunk_info on a second identifier of the open file), where every chunk is
-// after the layout and after three whole blocks: the same places and sizes (nothing
-// allocated or re-indexed while samples are written, the file's SIGKILL design,
-// result_file.hpp), and the rows read back are the ones written (a chunk written past
-// its end would overwrite what was written after it: the next chunk, or the series after).
+// A whole block goes to disk as its chunks, raw, over the places allocated for them at the
+// layout, which lays each block's chunks side by side in the order of the series (one
+// pwrite for them all). The test reads back, through HDF5's own index (H5Dget_chunk_info
+// on a second identifier of the open file), where every chunk is after the layout and
+// after three whole blocks: the same places and sizes (nothing allocated or re-indexed
+// while samples are written, the file's SIGKILL design, result_file.hpp), block k of the
+// second series right after block k of the first, and the rows read back are the ones
+// written (a chunk written past its end, or at another's place, would overwrite what was
+// written there: the next chunk, or the series after).
 TEST(ResultFile, WholeBlocksAreWrittenOverTheChunksTheLayoutAllocated) {
   const std::string output = temporary("chunks.h5");
   const int widths[2] = {0, 3};
@@ -400,6 +402,11 @@ TEST(ResultFile, WholeBlocksAreWrittenOverTheChunksTheLayoutAllocated) {
     EXPECT_EQ(after_samples[s], after_layout[s]) << "series " << s;
     for (const H5File::ChunkPlace& place : after_layout[s])
       EXPECT_EQ(place.bytes, ResultFile::block_rows * width * sizeof(double)) << "series " << s;
+  }
+  for (std::size_t k = 0; k < after_layout[0].size() && k < after_layout[1].size(); ++k) {
+    ASSERT_EQ(after_layout[0][k].first_row, after_layout[1][k].first_row) << "chunk " << k;
+    EXPECT_EQ(after_layout[1][k].address, after_layout[0][k].address + after_layout[0][k].bytes)
+        << "block " << k << ": the second series' chunk does not follow the first's";
   }
   const H5File file(output);
   ASSERT_TRUE(file.ok());
