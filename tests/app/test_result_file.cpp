@@ -12,11 +12,13 @@
 #include <future>
 #include <map>
 #include <sstream>
+#include <string>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
+#include <vector>
 #include <unistd.h>
 
 #include "app/case/case_definition.hpp"
@@ -302,6 +304,24 @@ TEST(ResultFile, AKilledWriterLeavesWholeSamples) {
   std::filesystem::remove(output);
 }
 
+/// Reads back every series "/series_<s>" of `output` (widths[s] columns, 0 for a
+/// one-dimensional series): `samples` rows, value(k, s, c) in row k, column c.
+template <class Value>
+void expect_series_read_back(const std::string& output, const std::vector<int>& widths, long samples,
+                             const Value& value) {
+  const H5File file(output);
+  ASSERT_TRUE(file.ok());
+  for (std::size_t s = 0; s < widths.size(); ++s) {
+    const std::vector<double> values = file.read("/series_" + std::to_string(s));
+    const int width = std::max(widths[s], 1);
+    ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width)) << "series " << s;
+    for (long k = 0; k < samples; ++k)
+      for (int c = 0; c < width; ++c)
+        ASSERT_EQ(values[k * width + c], value(k, static_cast<int>(s), c))
+            << "series " << s << " sample " << k << " column " << c;
+  }
+}
+
 TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   // Series of widths 1, 3 and 7 (rows staged side by side, then moved to each series'
   // block a run of 64 samples at a time, result_file.hpp), 4000 samples: whole blocks of
@@ -341,16 +361,7 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
     }
     file.close();
   }
-  H5File file(output);
-  ASSERT_TRUE(file.ok());
-  for (int s = 0; s < 3; ++s) {
-    const std::vector<double> values = file.read("/series_" + std::to_string(s));
-    const int width = std::max(widths[s], 1);
-    ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width)) << "series " << s;
-    for (long k = 0; k < samples; ++k)
-      for (int c = 0; c < width; ++c)
-        ASSERT_EQ(values[k * width + c], value(k, s, c)) << "series " << s << " sample " << k << " column " << c;
-  }
+  expect_series_read_back(output, {widths, widths + 3}, samples, value);
   std::filesystem::remove(output);
 }
 
@@ -408,16 +419,7 @@ TEST(ResultFile, WholeBlocksAreWrittenOverTheChunksTheLayoutAllocated) {
     EXPECT_EQ(after_layout[1][k].address, after_layout[0][k].address + after_layout[0][k].bytes)
         << "block " << k << ": the second series' chunk does not follow the first's";
   }
-  const H5File file(output);
-  ASSERT_TRUE(file.ok());
-  for (int s = 0; s < 2; ++s) {
-    const std::vector<double> values = file.read("/series_" + std::to_string(s));
-    const int width = std::max(widths[s], 1);
-    ASSERT_EQ(values.size(), static_cast<std::size_t>(samples * width));
-    for (long k = 0; k < samples; ++k)
-      for (int c = 0; c < width; ++c)
-        ASSERT_EQ(values[k * width + c], value(k, s, c)) << "series " << s << " sample " << k << " column " << c;
-  }
+  expect_series_read_back(output, {widths, widths + 2}, samples, value);
   std::filesystem::remove(output);
 }
 
