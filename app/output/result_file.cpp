@@ -384,11 +384,13 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   // A dataset made once the layout is published would change the file's structure while
   // readers (and a SIGKILL) may find it half made (the header).
   if (published_) throw std::logic_error("ResultFile: a series added after the layout was published: " + dataset_path);
+  // The staging's layout is the series' (a row of each side by side): fixed before a sample.
+  if (buffered_samples_ > 0 || rows_on_disk_ > 0)
+    throw std::logic_error("ResultFile: a series added after samples: " + dataset_path);
   const int rank = columns == 0 ? 1 : 2;
-  // No row: arrange_chunks_by_block() grows every series to its reservation a block at a
-  // time before the layout is published (or, after a flush or a sample, it has: full length).
-  const hsize_t rows = chunks_arranged_ ? reserved_samples_ : 0;
-  const hsize_t initial[2] = {rows, static_cast<hsize_t>(columns)};
+  // No row: arrange_chunks_by_block(), which runs only once there are samples or as the
+  // layout is published (both refused above), grows every series to its reservation.
+  const hsize_t initial[2] = {0, static_cast<hsize_t>(columns)};
   const hsize_t maximum[2] = {H5S_UNLIMITED, static_cast<hsize_t>(columns)};
   const hsize_t chunk[2] = {block_rows, static_cast<hsize_t>(std::max(columns, 1))};
   const Handle space(H5Screate_simple(rank, initial, maximum));
@@ -406,10 +408,6 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   series.dataset = std::move(dataset);
   series.columns = columns;
   series.width = static_cast<hsize_t>(std::max(columns, 1));
-  series.extent = rows;
-  // The staging's layout is the series' (a row of each side by side): fixed before a sample.
-  if (buffered_samples_ > 0 || rows_on_disk_ > 0)
-    throw std::logic_error("ResultFile: a series added after samples: " + dataset_path);
   series.staging_offset = staging_width_;
   staging_width_ += series.width;
   staging_.resize(staged_rows * staging_width_);  // no sample before the layout stands (resize: amortized, not a fill per series)
@@ -518,6 +516,8 @@ void ResultFile::write_whole_block(const double* block, hsize_t first_row, hsize
     run_bytes = 0;
   };
   const hsize_t offset[2] = {first_row, 0};
+  // Raw writes need the descriptor and a block that starts a chunk (not after a flush mid-block).
+  const bool raw_chunks = raw_data_ >= 0 && first_row % block_rows == 0;
   for (Series& series : series_) {
     const double* data = block + block_offset(series);
     const hsize_t bytes = chunk_bytes(series);
@@ -525,7 +525,7 @@ void ResultFile::write_whole_block(const double* block, hsize_t first_row, hsize
     unsigned filter_mask = 0;
     haddr_t address = HADDR_UNDEF;
     hsize_t stored_bytes = 0;
-    const bool in_place = raw_data_ >= 0 && first_row % block_rows == 0 &&
+    const bool in_place = raw_chunks &&
                           H5Dget_chunk_info_by_coord(series.dataset.get(), offset, &filter_mask, &address,
                                                      &stored_bytes) >= 0 &&
                           address != HADDR_UNDEF && filter_mask == 0 && stored_bytes == bytes;

@@ -123,8 +123,8 @@ class ResultFile {
   }
   /// The series' last whole block (block_rows rows), which end_sample() handed to the
   /// block writer (valid once a whole block has been ended). It stays untouched, and may
-  /// be read on another thread, until
-  /// end_sample() ends the next whole block: the two blocks trade places then (no copy).
+  /// be read on another thread, until end_sample() ends the next whole block: the two
+  /// blocks trade places then (no copy).
   const double* last_block(int series) const { return last_block_.get() + block_offset(series_[series]); }
   /// Whole samples in the block, not yet written.
   hsize_t buffered_samples() const { return buffered_samples_; }
@@ -243,7 +243,7 @@ class ResultFile {
   void commit();
   void flush_file();
   void publish();
-  /// Grows every series from its first block to `reserved_samples`, a block of every
+  /// Grows every series from no row to `reserved_samples`, a block of every
   /// series at a time, so that each block's chunks lie side by side in the file in the
   /// order of the series (see write_whole_block); once, before the layout is published.
   void arrange_chunks_by_block();
