@@ -33,8 +33,8 @@ PARTS = [  # names that do not nest in a run (load_case is resolved_case_tree + 
 DETAILS = [
     ("recorder constructor (channels, datasets, attributes)", ("Recorder::Recorder",)),
     ("the helper threads (BackgroundWorker::loop: samples, statistics, writes)", ("BackgroundWorker::loop",)),
-    ("the samples' channels (Recorder::record_evaluation; their evaluation is beside it)",
-     ("Recorder::record_evaluation",)),
+    ("the samples' channels and their record in order (Recorder::fill_row, Recorder::commit_row;"
+     " their evaluation is beside it)", ("Recorder::fill_row", "Recorder::commit_row")),
     ("block statistics (Recorder::add_block_statistics, every thread)", ("Recorder::add_block_statistics",)),
     ("of which Welch spectra (WelchAccumulator::add)", ("WelchAccumulator::add",)),
     ("block writes (ResultFile::write_rows)", ("ResultFile::write_rows",)),
@@ -101,6 +101,12 @@ def main():
     main_shares = [(name, count) for name, count in shares.items() if name != "recording (the rest)"]
     main_shares.append(("recording (the rest)", main_thread - sum(count for _, count in main_shares)))
     print(f"{main_thread:,} of them on the integrating thread (the helper threads' {helpers:,} run beside it):")
+    # That thread evaluates samples too whenever the samples' thread is busy
+    # (Recorder::evaluate_while_busy): how many depends on the schedule, and Valgrind runs
+    # one thread at a time, so it takes more of them here than in a run (`heavesim run`
+    # prints the run's split).
+    print("  (with the samples that thread evaluated while the samples' thread was busy: under"
+          " Valgrind's one-thread-at-a-time schedule, more than in a run)")
     print_shares(main_shares, main_thread)
 
 

@@ -32,15 +32,16 @@ PARTS = [
 DETAILS = [
     ("recorder constructor (channels, datasets, attributes)", "Recorder::Recorder"),
     ("per-sample evaluation (MultibodySystem::evaluate)", "MultibodySystem::evaluate"),
-    ("per-sample channels (Recorder::record_evaluation)", "Recorder::record_evaluation"),
+    ("per-sample channels (Recorder::fill_row)", "Recorder::fill_row"),
+    ("per-sample record in order (Recorder::commit_row)", "Recorder::commit_row"),
     ("end of run (Recorder::finish)", "Recorder::finish"),
 ]
 # The helper threads, by the job on their stacks (app/output/background_worker.hpp).
 # The compiler inlines the jobs themselves (record_batch, write_last_blocks) into the
 # worker's lambda: what they call names them.
 HELPERS = [
-    ("samples' evaluation (MultibodySystem::evaluate, Recorder::record_evaluation)",
-     ("MultibodySystem::evaluate", "Recorder::record_evaluation", "Recorder::record_batch")),
+    ("samples' evaluation (MultibodySystem::evaluate, Recorder::fill_row, Recorder::commit_row)",
+     ("MultibodySystem::evaluate", "Recorder::fill_row", "Recorder::commit_row", "Recorder::record_batch")),
     ("block statistics (Recorder::add_block_statistics)", ("Recorder::add_block_statistics",)),
     ("block writes (ResultFile::write_rows)", ("ResultFile::write_rows", "ResultFile::write_last_blocks")),
 ]

@@ -29,6 +29,11 @@ void BackgroundWorker::wait() {
   if (const std::exception_ptr failure = settle(lock)) std::rethrow_exception(failure);
 }
 
+bool BackgroundWorker::busy() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return running_;
+}
+
 void BackgroundWorker::start() {
   std::unique_lock<std::mutex> lock(mutex_);
   if (const std::exception_ptr failure = settle(lock)) std::rethrow_exception(failure);

@@ -30,6 +30,9 @@ class BackgroundWorker {
   void start();
   /// Returns when no run is in hand; throws what the last run threw (once).
   void wait();
+  /// Whether a run is in hand (started, not yet finished): a glance that does not wait,
+  /// for a caller that has other work to do meanwhile.
+  bool busy();
 
  private:
   void loop();

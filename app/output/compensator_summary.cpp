@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 #include <fmt/format.h>
 
@@ -9,49 +10,79 @@ namespace heavesim {
 
 CompensatorSummary::CompensatorSummary(const MultibodySystem& system, const SummarisedElements& elements,
                                        double evaluate_after)
-    : system_(system), evaluate_after_(evaluate_after) {
+    : evaluate_after_(evaluate_after) {
   for (const auto& [pneumatic, index] : elements.pneumatic_compensators)
-    passive_.push_back({pneumatic, system.state_offset(index), EndStopMonitor(pneumatic->parameters().end_stops)});
-  for (const auto& [active, index] : elements.active_compensators) active_.push_back({active, system.state_offset(index)});
-  for (const auto& contact : elements.ground_contacts) contacts_.push_back({contact.element});
+    passive_.push_back({pneumatic, index, system.state_offset(index), EndStopMonitor(pneumatic->parameters().end_stops)});
+  for (const auto& [active, index] : elements.active_compensators)
+    active_.push_back({active, index, system.state_offset(index)});
+  for (const auto& [contact, index] : elements.ground_contacts) contacts_.push_back({contact, index});
+  // measure() finds the elements by index, in any build of the case.
+  const auto at = [&system](std::size_t index) { return system.force_elements().at(index).get(); };
+  bool placed = true;
+  for (const Passive& p : passive_) placed = placed && at(p.index) == p.element;
+  for (const Active& a : active_) placed = placed && at(a.index) == a.element;
+  for (const Contact& c : contacts_) placed = placed && at(c.index) == c.element;
+  if (!placed) throw std::logic_error("CompensatorSummary: an element is not at its index in the system");
+  measured_values_ = static_cast<int>(5 * passive_.size() + contacts_.size() + 3 * active_.size());
 }
 
-void CompensatorSummary::observe(double t, const VectorX& y) {
-  const Model& model = system_.model();
-  const Data& data = system_.data();
-  for (Passive& p : passive_) {
-    const PneumaticState& s = p.element->evaluated(t, model, data, y.segment(p.offset, p.element->state_size()));
-    p.monitor.observe(s.stroke);
-    p.max_stroke = std::max(p.max_stroke, s.stroke);
-    p.min_stroke = std::min(p.min_stroke, s.stroke);
-    p.max_pressure = std::max(p.max_pressure, s.gas_pressure);
-    p.min_pressure = std::min(p.min_pressure, s.gas_pressure);
-    p.max_temperature = std::max(p.max_temperature, s.gas_temperature);
-    p.min_temperature = std::min(p.min_temperature, s.gas_temperature);
-    if (in_window(t)) {
-      // The moving side sits (mid-stroke + s) along the stroke axis from the base.
-      const StrokeAxis& axis = p.element->axis();
-      const BaseMotion base = base_motion(axis, model, data);
-      const double base_height = base.position_world.z();
-      const double load_height = base_height + base.axis_world.z() * (axis.mid_stroke + s.stroke);
-      p.base_height.add(&base_height);
-      p.load_height.add(&load_height);
-    }
+void CompensatorSummary::measure(const MultibodySystem& system, double t, const VectorX& y, double* values) const {
+  const Model& model = system.model();
+  const Data& data = system.data();
+  for (const Passive& p : passive_) {
+    const PneumaticCompensator& element = element_of<PneumaticCompensator>(system, p.index);
+    const PneumaticState& s = element.evaluated(t, model, data, y.segment(p.offset, element.state_size()));
+    // The moving side sits (mid-stroke + s) along the stroke axis from the base.
+    const StrokeAxis& axis = element.axis();
+    const BaseMotion base = base_motion(axis, model, data);
+    const double base_height = base.position_world.z();
+    *values++ = s.stroke;
+    *values++ = s.gas_pressure;
+    *values++ = s.gas_temperature;
+    *values++ = base_height;
+    *values++ = base_height + base.axis_world.z() * (axis.mid_stroke + s.stroke);
   }
-  if (in_window(t))
-    for (Contact& c : contacts_) {
-      const double force = c.element->state(data).force;
-      c.force.add(&force);
-      c.lifted_samples += force <= 0.0;
+  for (const Contact& c : contacts_) *values++ = element_of<GroundContact>(system, c.index).state(data).force;
+  for (const Active& a : active_) {
+    const ActiveCompensator& element = element_of<ActiveCompensator>(system, a.index);
+    const ActiveState& s = element.evaluated(t, model, data, y.segment(a.offset, element.state_size()));
+    *values++ = s.force;
+    *values++ = s.error;
+    *values++ = s.supply_power;
+  }
+}
+
+void CompensatorSummary::observe(double t, const double* values) {
+  for (Passive& p : passive_) {
+    const double stroke = values[0], pressure = values[1], temperature = values[2];
+    p.monitor.observe(stroke);
+    p.max_stroke = std::max(p.max_stroke, stroke);
+    p.min_stroke = std::min(p.min_stroke, stroke);
+    p.max_pressure = std::max(p.max_pressure, pressure);
+    p.min_pressure = std::min(p.min_pressure, pressure);
+    p.max_temperature = std::max(p.max_temperature, temperature);
+    p.min_temperature = std::min(p.min_temperature, temperature);
+    if (in_window(t)) {
+      p.base_height.add(values + 3);
+      p.load_height.add(values + 4);
     }
+    values += 5;
+  }
+  for (Contact& c : contacts_) {
+    const double force = *values++;
+    if (!in_window(t)) continue;
+    c.force.add(&force);
+    c.lifted_samples += force <= 0.0;
+  }
   for (Active& a : active_) {
-    const ActiveState& s = a.element->evaluated(t, model, data, y.segment(a.offset, a.element->state_size()));
-    a.max_force = std::max(a.max_force, std::abs(s.force));
-    a.max_error = std::max(a.max_error, std::abs(s.error));
-    a.max_supply_power = std::max(a.max_supply_power, s.supply_power);
+    const double force = values[0], error = values[1], supply_power = values[2];
+    values += 3;
+    a.max_force = std::max(a.max_force, std::abs(force));
+    a.max_error = std::max(a.max_error, std::abs(error));
+    a.max_supply_power = std::max(a.max_supply_power, supply_power);
     if (a.samples == 0) a.first_time = t;
-    if (a.samples > 0) a.supply_energy += 0.5 * (s.supply_power + a.last_supply_power) * (t - a.last_time);  // trapezoid
-    a.last_supply_power = s.supply_power;
+    if (a.samples > 0) a.supply_energy += 0.5 * (supply_power + a.last_supply_power) * (t - a.last_time);  // trapezoid
+    a.last_supply_power = supply_power;
     a.last_time = t;
     ++a.samples;
   }

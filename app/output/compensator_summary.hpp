@@ -31,8 +31,18 @@ class CompensatorSummary {
   /// recorder's per-joint load statistics use the same window).
   double evaluate_after() const { return evaluate_after_; }
   bool in_window(double t) const { return t >= evaluate_after_ - 1e-9; }
-  /// After system.evaluate(t, y): takes one sample.
-  void observe(double t, const VectorX& y);
+  /// How many values measure() writes for one sample.
+  int measured_values() const { return measured_values_; }
+  /// After `system.evaluate(t, y)`: what observe() takes of that sample (each passive
+  /// compensator's stroke [m], gas pressure [Pa] and temperature [K], base and load heights
+  /// [m]; each ground contact's force [N]; each active compensator's force [N], control
+  /// error [m] and supply power [W]) into `values` (measured_values()). `system` is the
+  /// summary's or another build of the same case (its elements at the same places): the
+  /// recorder evaluates its samples on two scenes at once. Reads nothing of the summary's
+  /// running state, so any thread may measure while another observes.
+  void measure(const MultibodySystem& system, double t, const VectorX& y, double* values) const;
+  /// Takes one sample's measured values, in sample order.
+  void observe(double t, const double* values);
   void write(ResultFile& file) const;
   /// 1 - sigma(z_load) / sigma(z_base) of passive compensator k over the window; NaN if
   /// the base did not move (nothing to compensate) or the window holds < 2 samples.
@@ -43,6 +53,7 @@ class CompensatorSummary {
  private:
   struct Passive {
     const PneumaticCompensator* element;
+    std::size_t index;  // in MultibodySystem::force_elements()
     int offset;
     EndStopMonitor monitor;
     double max_stroke = -1e300, min_stroke = 1e300, max_pressure = -1e300, min_pressure = 1e300;
@@ -51,6 +62,7 @@ class CompensatorSummary {
   };
   struct Active {
     const ActiveCompensator* element;
+    std::size_t index;
     int offset;
     double max_force = 0.0, max_error = 0.0, max_supply_power = 0.0, supply_energy = 0.0;
     double first_time = 0.0, last_time = 0.0;
@@ -59,11 +71,17 @@ class CompensatorSummary {
   };
   struct Contact {
     const GroundContact* element;
+    std::size_t index;
     RunningStatistics force{};  // N, over the evaluation window
     long lifted_samples = 0;    // samples in the window with no contact force
   };
-  const MultibodySystem& system_;
+  /// The element at `index` of `system`, of the type the summary's has there.
+  template <class Element>
+  static const Element& element_of(const MultibodySystem& system, std::size_t index) {
+    return static_cast<const Element&>(*system.force_elements()[index]);
+  }
   double evaluate_after_;
+  int measured_values_ = 0;
   std::vector<Passive> passive_;
   std::vector<Active> active_;
   std::vector<Contact> contacts_;

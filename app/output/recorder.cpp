@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
+#include <typeinfo>
 #include <utility>
 
 #include <fmt/format.h>
@@ -102,8 +103,12 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile& f
   const double window = definition.solver.t_end - std::max(definition.solver.t_start, evaluate_after());
   window_samples_ = std::max<std::int64_t>(0, std::llround(window / definition.output.interval) + 1);
   define_channels(definition);
+  has_extra_channels_ = !extra_channels.empty();
   for (const ExtraChannel& extra : extra_channels)
-    add({extra.path, 0, extra.units, extra.description, {}, [value = extra.value](double, double* out) { out[0] = value(); }});
+    add({extra.path, 0, extra.units, extra.description, {},
+         [value = extra.value](SampleContext&, double, double* out) { out[0] = value(); }});
+  own_ = make_context(*scene_.system);
+  measured_.assign(compensators_.measured_values(), 0.0);
   if (csv_) csv_row_.assign(row_width_, 0.0);
   // HDF5 lists groups alphabetically; keep the model's (topological) order too.
   const Model& model = *scene_.model;
@@ -162,28 +167,29 @@ void Recorder::add(Channel channel) {
 void Recorder::define_channels(const CaseDefinition& definition) {
   const OutputSettings& output = definition.output;
   const Model& model = *scene_.model;
-  const MultibodySystem& system = *scene_.system;
   const std::vector<std::string> xyz = {".x", ".y", ".z"};
 
-  add({"/time", 0, "s", "simulation time", {}, [](double t, double* out) { out[0] = t; }});
+  add({"/time", 0, "s", "simulation time", {}, [](SampleContext&, double t, double* out) { out[0] = t; }});
 
+  // The fills read the evaluation of whichever scene the sample's context holds, by index:
+  // the channels are the same on every build of the case.
   if (output.bodies) {
-    body_frames_.resize(model.num_links());
+    records_bodies_ = true;
     for (int i = 1; i < model.num_links(); ++i) {
       const std::string base = "/bodies/" + model.links[i].name;
       add({base + "/position", 3, "m", "body reference point (body frame origin), world frame", xyz,
-           [this, i](double, double* out) { map3(out) = body_frames_[i].translation(); }});
+           [i](SampleContext& sample, double, double* out) { map3(out) = sample.body_frames[i].translation(); }});
       add({base + "/orientation", 4, "-", "unit quaternion w, x, y, z of the body frame, body -> world",
-           {".w", ".x", ".y", ".z"}, [this, i](double, double* out) {
-             const Eigen::Quaterniond q(body_frames_[i].rotation());
+           {".w", ".x", ".y", ".z"}, [i](SampleContext& sample, double, double* out) {
+             const Eigen::Quaterniond q(sample.body_frames[i].rotation());
              out[0] = q.w(); out[1] = q.x(); out[2] = q.y(); out[3] = q.z();
            }});
       add({base + "/velocity", 6, "rad/s, m/s",
            "[angular velocity; velocity of the body reference point], world axes",
-           {".wx", ".wy", ".wz", ".vx", ".vy", ".vz"}, [this, &system, i](double, double* out) {
-             const Motion& v = system.data().velocity_world[i];
+           {".wx", ".wy", ".wz", ".vx", ".vy", ".vz"}, [i](SampleContext& sample, double, double* out) {
+             const Motion& v = sample.system->data().velocity_world[i];
              map3(out) = v.angular();
-             map3(out + 3) = v.point_velocity(body_frames_[i].translation());
+             map3(out + 3) = v.point_velocity(sample.body_frames[i].translation());
            }, -1, {}, {}, {"rad/s", "rad/s", "rad/s", "m/s", "m/s", "m/s"}});
     }
   }
@@ -193,38 +199,40 @@ void Recorder::define_channels(const CaseDefinition& definition) {
     const std::string base = "/joints/" + joint.name;
     const std::string type = joint_type_name(joint.type);
     if (output.joints && joint.nv > 0) {
-      add({base + "/q", joint.nq, coordinate_units(joint.type),
-           type + " joint coordinates (order in docs/result-file.md)", {}, [&system, joint](double, double* out) {
-             Eigen::Map<VectorX>(out, joint.nq) = system.configuration().segment(joint.q_index, joint.nq);
-           }, -1, {}, {}, coordinate_column_units(joint.type, joint.nq)});
-      add({base + "/qd", joint.nv, speed_units(joint.type, ""),
+      const int q_index = joint.q_index, nq = joint.nq, v_index = joint.v_index, nv = joint.nv;
+      add({base + "/q", nq, coordinate_units(joint.type),
+           type + " joint coordinates (order in docs/result-file.md)", {},
+           [q_index, nq](SampleContext& sample, double, double* out) {
+             Eigen::Map<VectorX>(out, nq) = sample.system->configuration().segment(q_index, nq);
+           }, -1, {}, {}, coordinate_column_units(joint.type, nq)});
+      add({base + "/qd", nv, speed_units(joint.type, ""),
            type + " joint speeds (child-side axes for spherical and free joints)", {},
-           [&system, joint](double, double* out) {
-             Eigen::Map<VectorX>(out, joint.nv) = system.velocity().segment(joint.v_index, joint.nv);
-           }, -1, {}, {}, speed_column_units(joint.type, joint.nv, "")});
-      add({base + "/qdd", joint.nv, speed_units(joint.type, "/s"), type + " joint accelerations", {},
-           [&system, joint](double, double* out) {
-             Eigen::Map<VectorX>(out, joint.nv) = system.data().qdd.segment(joint.v_index, joint.nv);
-           }, -1, {}, {}, speed_column_units(joint.type, joint.nv, "/s")});
+           [v_index, nv](SampleContext& sample, double, double* out) {
+             Eigen::Map<VectorX>(out, nv) = sample.system->velocity().segment(v_index, nv);
+           }, -1, {}, {}, speed_column_units(joint.type, nv, "")});
+      add({base + "/qdd", nv, speed_units(joint.type, "/s"), type + " joint accelerations", {},
+           [v_index, nv](SampleContext& sample, double, double* out) {
+             Eigen::Map<VectorX>(out, nv) = sample.system->data().qdd.segment(v_index, nv);
+           }, -1, {}, {}, speed_column_units(joint.type, nv, "/s")});
     }
     if (output.reactions) {
       needs_reactions_ = true;
-      const std::size_t k = reaction_joints_.size();  // this joint's entry of reactions_
+      const std::size_t k = reaction_joints_.size();  // this joint's entry of the contexts' reactions
       reaction_joints_.push_back(i);
-      reactions_.emplace_back();
       joint_loads_.push_back({joint.name, 0.0, RunningStatistics(1)});
+      reaction_force_row_offsets_.push_back(row_width_);  // the load is its norm
       add({base + "/reaction_force", 3, "N",
            "force exerted by the parent on the child at the joint origin, world axes", xyz,
-           [this, k](double, double* out) { map3(out) = reactions_[k].force_world; }});
+           [k](SampleContext& sample, double, double* out) { map3(out) = sample.reactions[k].force_world; }});
       add({base + "/reaction_moment", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, world axes", xyz,
-           [this, k](double, double* out) { map3(out) = reactions_[k].moment_world; }});
+           [k](SampleContext& sample, double, double* out) { map3(out) = sample.reactions[k].moment_world; }});
       add({base + "/reaction_force_joint", 3, "N",
            "force exerted by the parent on the child, joint (child-side) axes", xyz,
-           [this, k](double, double* out) { map3(out) = reactions_[k].force_joint; }});
+           [k](SampleContext& sample, double, double* out) { map3(out) = sample.reactions[k].force_joint; }});
       add({base + "/reaction_moment_joint", 3, "N m",
            "moment exerted by the parent on the child about the joint origin, joint (child-side) axes", xyz,
-           [this, k](double, double* out) { map3(out) = reactions_[k].moment_joint; }});
+           [k](SampleContext& sample, double, double* out) { map3(out) = sample.reactions[k].moment_joint; }});
     }
   }
 
@@ -242,38 +250,39 @@ void Recorder::define_channels(const CaseDefinition& definition) {
         return joint.limits.has_value() || (joint.spring && joint.spring->damping.cwiseAbs().maxCoeff() > 0.0);
       });
   if (output.energy) {
-    // The energies of the sample, computed once per record().
+    // The energies of the sample, computed once per sample (fill_row), side by side.
+    energy_row_offset_ = row_width_;
     add({"/signals/kinetic_energy", 0, "J", "kinetic energy of all bodies (including added mass)", {},
-         [this](double, double* out) { out[0] = energy_.kinetic; }});
+         [](SampleContext& sample, double, double* out) { out[0] = sample.energy.kinetic; }});
     add({"/signals/potential_energy", 0, "J",
          "gravitational, joint-spring and force-element (springs, gas, restoring, contact) potential energy", {},
-         [this](double, double* out) { out[0] = energy_.potential; }});
+         [](SampleContext& sample, double, double* out) { out[0] = sample.energy.potential; }});
     add({"/signals/total_energy", 0, "J", "kinetic plus potential energy", {},
-         [this](double, double* out) { out[0] = energy_.total; }});
+         [](SampleContext& sample, double, double* out) { out[0] = sample.energy.total; }});
   }
 }
 
 void Recorder::define_constraint_channels(const OutputSettings& output) {
   const Model& model = *scene_.model;
   if (!model.has_constraints()) return;
-  const MultibodySystem& system = *scene_.system;
   const std::vector<std::string> xyz = {".x", ".y", ".z"};
-  phi_.resize(model.num_constraint_rows);
-  constraint_velocity_.resize(model.num_constraint_rows);
   // Drift is always recorded: it is how a user sees that a loop stayed closed.
   add({"/signals/constraint_residual", 0, "m or rad", "max |Phi(q, t)| over all constraint rows", {},
-       [this, &system](double t, double* out) {
-         constraint_residual(system.model(), system.data(), system.configuration(), t, phi_);
-         out[0] = phi_.cwiseAbs().maxCoeff();
+       [](SampleContext& sample, double t, double* out) {
+         const MultibodySystem& system = *sample.system;
+         constraint_residual(system.model(), system.data(), system.configuration(), t, sample.phi);
+         out[0] = sample.phi.cwiseAbs().maxCoeff();
        }});
   add({"/signals/constraint_velocity_residual", 0, "m/s or rad/s",
-       "max |J v + dPhi/dt| over all constraint rows", {}, [this, &system](double t, double* out) {
-         constraint_velocity_target(system.model(), system.data(), t, constraint_velocity_);
-         constraint_velocity_.noalias() -= system.data().constraint_jacobian * system.velocity();
-         out[0] = constraint_velocity_.cwiseAbs().maxCoeff();
+       "max |J v + dPhi/dt| over all constraint rows", {}, [](SampleContext& sample, double t, double* out) {
+         const MultibodySystem& system = *sample.system;
+         constraint_velocity_target(system.model(), system.data(), t, sample.constraint_velocity);
+         sample.constraint_velocity.noalias() -= system.data().constraint_jacobian * system.velocity();
+         out[0] = sample.constraint_velocity.cwiseAbs().maxCoeff();
        }});
   if (!output.reactions) return;
-  for (const Constraint& constraint : model.constraints) {
+  for (std::size_t c = 0; c < model.constraints.size(); ++c) {
+    const Constraint& constraint = model.constraints[c];
     if (constraint.is_driver() || constraint.is_unilateral()) continue;  // drivers: /drivers; stops: the contacts element
     const std::string base = "/constraints/" + constraint.name;
     const int rows = static_cast<int>(constraint.rows.size());
@@ -286,30 +295,36 @@ void Recorder::define_constraint_channels(const OutputSettings& output) {
          "Lagrange multipliers lambda of the constraint rows (M qdd + C = tau + J^T lambda); "
          "minimum-norm where rows are redundant; a driver's is the force (N) or torque (N m) it applies "
          "along its coordinate",
-         labels, [&system, &constraint, rows](double, double* out) {
-           Eigen::Map<VectorX>(out, rows) = system.data().constraint_multipliers.segment(constraint.first_row, rows);
+         labels, [first_row = constraint.first_row, rows](SampleContext& sample, double, double* out) {
+           Eigen::Map<VectorX>(out, rows) = sample.system->data().constraint_multipliers.segment(first_row, rows);
          }, -1, {}, {}, units});
     if (!constraint.acts_on_frames()) continue;
     // The wrench on side B (the loop joint's child side) about frame B's origin.
-    auto wrench_at_b = [&system, &constraint]() {
-      const Force f = constraint_wrench(system.model(), system.data(), constraint, system.data().constraint_multipliers);
-      const Vector3 origin = constraint_frame_b(system.data(), constraint).translation();
+    auto wrench_at_b = [c](const SampleContext& sample) {
+      const MultibodySystem& system = *sample.system;
+      const Constraint& on_scene = system.model().constraints[c];
+      const Force f = constraint_wrench(system.model(), system.data(), on_scene, system.data().constraint_multipliers);
+      const Vector3 origin = constraint_frame_b(system.data(), on_scene).translation();
       return std::pair<Vector3, Vector3>(f.linear(), f.angular() - origin.cross(f.linear()));
     };
     add({base + "/reaction_force", 3, "N",
          "force exerted by side A (parent/body_a) on side B (child/body_b) at frame B's origin, world axes", xyz,
-         [wrench_at_b](double, double* out) { map3(out) = wrench_at_b().first; }});
+         [wrench_at_b](SampleContext& sample, double, double* out) { map3(out) = wrench_at_b(sample).first; }});
     add({base + "/reaction_moment", 3, "N m",
          "moment exerted by side A on side B about frame B's origin, world axes", xyz,
-         [wrench_at_b](double, double* out) { map3(out) = wrench_at_b().second; }});
+         [wrench_at_b](SampleContext& sample, double, double* out) { map3(out) = wrench_at_b(sample).second; }});
   }
 }
 
 void Recorder::define_driver_channels() {
   const MultibodySystem& system = *scene_.system;
-  for (const Constraint& constraint : system.model().constraints) {
-    const DriverFunction* motion = constraint.driver_motion();
-    if (!motion) continue;
+  for (std::size_t c = 0; c < system.model().constraints.size(); ++c) {
+    const Constraint& constraint = system.model().constraints[c];
+    if (!constraint.driver_motion()) continue;
+    // f(t) of the sample's own scene: a driver's expression keeps its evaluation workspace.
+    const auto motion = [c](const SampleContext& sample, double t) {
+      return (*sample.system->model().constraints[c].driver_motion())(t);
+    };
     const std::string base = "/drivers/" + constraint.name;
     const bool angular = driver_is_angular(system.model(), constraint);
     const std::string unit = angular ? "rad" : "m";
@@ -320,13 +335,15 @@ void Recorder::define_driver_channels() {
          std::string(constraint.kind_name()) + " '" + constraint.name + "': the " + (angular ? "torque" : "force") +
              " it applies along its increasing coordinate (" + constraint.rows[0].description +
              "), the multiplier lambda of M qdd + C = tau + J^T lambda",
-         {}, [&system, row](double, double* out) { out[0] = system.data().constraint_multipliers[row]; }});
+         {}, [row](SampleContext& sample, double, double* out) {
+           out[0] = sample.system->data().constraint_multipliers[row];
+         }});
     add({base + "/position", 0, unit, "prescribed f(t)", {},
-         [motion](double t, double* out) { out[0] = (*motion)(t).position; }});
+         [motion](SampleContext& sample, double t, double* out) { out[0] = motion(sample, t).position; }});
     add({base + "/velocity", 0, unit + "/s", "prescribed f'(t)", {},
-         [motion](double t, double* out) { out[0] = (*motion)(t).velocity; }});
+         [motion](SampleContext& sample, double t, double* out) { out[0] = motion(sample, t).velocity; }});
     add({base + "/acceleration", 0, unit + "/s/s", "prescribed f''(t)", {},
-         [motion](double t, double* out) { out[0] = (*motion)(t).acceleration; }});
+         [motion](SampleContext& sample, double t, double* out) { out[0] = motion(sample, t).acceleration; }});
   }
 }
 
@@ -337,7 +354,7 @@ void Recorder::define_element_channels() {
     const ForceElement& element = *system.force_elements()[e];
     if (element.channels().empty()) continue;
     // Scalar channels added one after the other lie side by side in the row: the
-    // element's outputs() writes them all there (record_evaluation), no fill of their own.
+    // element's outputs() writes them all there (fill_row), no fill of their own.
     element_row_offsets_[e] = row_width_;
     for (const ElementChannel& channel : element.channels())
       add({"/forces/" + element.name() + "/" + channel.name, 0, channel.units, channel.description, {}, {}});
@@ -346,16 +363,14 @@ void Recorder::define_element_channels() {
 
 void Recorder::record(double t, const VectorX& y) {
   if (!evaluates_beside()) {
-    evaluate_and_record(t, y);
+    evaluate_row(own_, t, y, file_.sample_row(), measured_.data());
+    commit_row(t, file_.sample_row(), measured_.data());
     return;
   }
   SampleBatch& batch = batches_[filling_];
   batch.times[batch.count] = t;
   batch.states[batch.count] = y;  // the same size: no allocation
-  if (++batch.count < evaluation_batch) return;
-  settle_evaluation();  // the batch before is recorded: the worker takes this one
-  filling_ = 1 - filling_;
-  evaluation_worker_.start();
+  if (++batch.count == evaluation_batch) hand_over_batch();
 }
 
 std::string Recorder::why_samples_in_line(const CaseDefinition& definition, const Scene& scene) {
@@ -383,48 +398,128 @@ std::string Recorder::why_samples_in_line(const CaseDefinition& definition, cons
   return "";
 }
 
-void Recorder::evaluate_on_second_thread() {
+void Recorder::evaluate_on_second_thread(Scene* caller_scene) {
   if (samples_ > 0) throw std::logic_error("Recorder: evaluate_on_second_thread after the first sample");
+  if (caller_scene) {
+    // The fills and the compensators' measures read the caller's scene by index: it must
+    // be a build of the same case (the same links, constraint rows and elements, in the
+    // same order, with states of the same sizes).
+    const MultibodySystem& own = *scene_.system;
+    const MultibodySystem& callers = *caller_scene->system;
+    bool same = &callers != &own && callers.size() == own.size() &&
+                callers.model().num_links() == own.model().num_links() &&
+                callers.model().num_constraint_rows == own.model().num_constraint_rows &&
+                callers.force_elements().size() == own.force_elements().size();
+    for (std::size_t e = 0; same && e < own.force_elements().size(); ++e) {
+      const ForceElement& mine = *own.force_elements()[e];
+      const ForceElement& theirs = *callers.force_elements()[e];
+      same = typeid(theirs) == typeid(mine) && theirs.state_size() == mine.state_size() &&
+             theirs.channels().size() == mine.channels().size();
+    }
+    if (!same) throw std::logic_error("Recorder: the caller's scene is not another build of the recorder's case");
+    // A command's extra channel reads what the command keeps, on whichever thread asks.
+    if (has_extra_channels_) throw std::logic_error("Recorder: extra channels are read on one thread only");
+    caller_ = std::make_unique<SampleContext>(make_context(*caller_scene->system));
+  }
   for (SampleBatch& batch : batches_) {
     batch.times.assign(evaluation_batch, 0.0);
     batch.states.assign(evaluation_batch, VectorX::Zero(scene_.system->size()));
+    if (!caller_) continue;
+    batch.rows.reset(new double[evaluation_batch * row_width_]);
+    batch.measured.reset(new double[evaluation_batch * compensators_.measured_values()]);
   }
 }
 
-void Recorder::record_batch(SampleBatch& batch) {
-  const long count = std::exchange(batch.count, 0);
-  for (long k = 0; k < count; ++k) evaluate_and_record(batch.times[k], batch.states[k]);
+Recorder::SampleContext Recorder::make_context(MultibodySystem& system) const {
+  SampleContext sample;
+  sample.system = &system;
+  if (records_bodies_) sample.body_frames.resize(system.model().num_links());
+  sample.reactions.resize(reaction_joints_.size());
+  sample.phi.resize(system.model().num_constraint_rows);
+  sample.constraint_velocity.resize(system.model().num_constraint_rows);
+  return sample;
 }
 
-void Recorder::evaluate_and_record(double t, const VectorX& y) {
-  scene_.system->evaluate(t, y, needs_reactions_);
-  record_evaluation(t, y);
+void Recorder::hand_over_batch() {
+  evaluate_while_busy(batches_[filling_]);
+  settle_evaluation();  // the batch before is recorded: the worker takes this one
+  filling_ = 1 - filling_;
+  evaluation_worker_.start();
+}
+
+void Recorder::evaluate_while_busy(SampleBatch& batch) {
+  // The caller would wait here for the thread to record the batch before; it evaluates
+  // this batch's samples instead, from the first, until the thread is free (a glance at
+  // its state between samples), and the thread evaluates the rest. Its scene is the one it
+  // integrates, free between the integrator's steps: evaluated at a sample, it gives that
+  // sample's numbers, as it does when every sample is evaluated in line.
+  if (!caller_) return;
+  const long measured_width = compensators_.measured_values();
+  while (batch.evaluated < batch.count && !batch.failure && evaluation_worker_.busy()) {
+    const long k = batch.evaluated;
+    try {
+      evaluate_row(*caller_, batch.times[k], batch.states[k], batch.rows.get() + k * row_width_,
+                   batch.measured.get() + k * measured_width);
+    } catch (...) {
+      batch.failure = std::current_exception();  // thrown by the thread after the samples before it
+      return;
+    }
+    ++batch.evaluated;
+  }
+}
+
+void Recorder::record_batch(SampleBatch& batch, SampleContext& sample) {
+  const long count = std::exchange(batch.count, 0);
+  const long evaluated = std::exchange(batch.evaluated, 0);
+  const std::exception_ptr failure = std::exchange(batch.failure, nullptr);
+  const long measured_width = compensators_.measured_values();
+  for (long k = 0; k < evaluated; ++k) {
+    commit_row(batch.times[k], batch.rows.get() + k * row_width_, batch.measured.get() + k * measured_width);
+    ++samples_evaluated_by_caller_;
+  }
+  if (failure) std::rethrow_exception(failure);
+  for (long k = evaluated; k < count; ++k) {
+    evaluate_row(sample, batch.times[k], batch.states[k], file_.sample_row(), measured_.data());
+    commit_row(batch.times[k], file_.sample_row(), measured_.data());
+  }
 }
 
 void Recorder::settle_evaluation() {
   try {
     evaluation_worker_.wait();
   } catch (...) {
-    batches_[filling_].count = 0;
+    SampleBatch& dropped = batches_[filling_];
+    dropped.count = dropped.evaluated = 0;
+    dropped.failure = nullptr;
     throw;
   }
 }
 
 void Recorder::record_queued_samples() {
   if (!evaluates_beside()) return;
+  evaluate_while_busy(batches_[filling_]);
   settle_evaluation();
-  record_batch(batches_[filling_]);  // in line: the worker is idle
+  record_batch(batches_[filling_], own_);  // in line: the worker is idle
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
-  MultibodySystem& system = *scene_.system;
+  fill_row(own_, t, y, file_.sample_row(), measured_.data());
+  commit_row(t, file_.sample_row(), measured_.data());
+}
+
+void Recorder::evaluate_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured) {
+  sample.system->evaluate(t, y, needs_reactions_);
+  fill_row(sample, t, y, row, measured);
+}
+
+void Recorder::fill_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured) {
+  MultibodySystem& system = *sample.system;
   // Everything below reads the stages of this one evaluation; require_stages catches a
   // read after something evaluated the system again (a stale read).
   const long evaluation = system.data().stages.evaluation;
   const unsigned stages = StageMarker::positions | StageMarker::velocities | StageMarker::accelerations |
                           (needs_reactions_ ? StageMarker::reactions : 0u);
-  // The sample's row: the file's staged sample, every channel's values side by side.
-  double* const row = file_.sample_row();
+  // The sample's row: every channel's values side by side.
   for (std::size_t e = 0; e < element_row_offsets_.size(); ++e) {
     if (element_row_offsets_[e] < 0) continue;
     const ForceElement& element = *system.force_elements()[e];
@@ -434,7 +529,7 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     element.outputs(t, system.model(), system.data(), y.segment(system.state_offset(e), element.state_size()),
                     values);
   }
-  compensators_.observe(t, y);
+  compensators_.measure(system, t, y, measured);
   if (records_energy_) {
     // T + V with V = gravity + joint springs + what the force elements store; summed left
     // to right so that a scene whose elements store nothing gives the same digits as T + V_g + V_j.
@@ -446,28 +541,39 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
     }
     const double gravity = gravity_potential_energy(system.model(), system.data());
     const double joint_springs = joint_elastic_energy(system.model(), system.configuration());
-    energy_.kinetic = kinetic_energy(system.model(), system.data());
-    energy_.potential = gravity + joint_springs + element_energy;
-    energy_.total = energy_.kinetic + gravity + joint_springs + element_energy;
+    sample.energy.kinetic = kinetic_energy(system.model(), system.data());
+    sample.energy.potential = gravity + joint_springs + element_energy;
+    sample.energy.total = sample.energy.kinetic + gravity + joint_springs + element_energy;
   }
+  // Once a sample: the four reaction channels and the load read it.
+  for (std::size_t k = 0; k < reaction_joints_.size(); ++k)
+    sample.reactions[k] = joint_reaction(system.model(), system.data(), reaction_joints_[k]);
+  require_stages(system.data(), stages, t, evaluation);
+  for (std::size_t i = 1; i < sample.body_frames.size(); ++i)
+    sample.body_frames[i] = system.data().X_world_link[i] * system.model().links[i].X_link_body;
+  for (Fill& fill : fills_) fill.write(sample, t, row + fill.row_offset);
+  require_stages(system.data(), stages, t, evaluation);
+}
+
+void Recorder::commit_row(double t, const double* row, const double* measured) {
+  compensators_.observe(t, measured);
   for (std::size_t k = 0; k < reaction_joints_.size(); ++k) {
-    // Once a sample: the four reaction channels and the load read it.
-    reactions_[k] = joint_reaction(system.model(), system.data(), reaction_joints_[k]);
-    const double load = reactions_[k].force_world.norm();
+    const double load = map3(row + reaction_force_row_offsets_[k]).norm();
     joint_loads_[k].peak = std::max(joint_loads_[k].peak, load);
     if (compensators_.in_window(t)) joint_loads_[k].window.add(&load);
   }
-  require_stages(system.data(), stages, t, evaluation);
-  for (std::size_t i = 1; i < body_frames_.size(); ++i)
-    body_frames_[i] = system.data().X_world_link[i] * system.model().links[i].X_link_body;
-  for (Fill& fill : fills_) fill.write(t, row + fill.row_offset);
   if (csv_) csv_row_.assign(row, row + row_width_);  // sized once: no allocation
+  // Read before end_sample(): the staged row (`row`, in line) is the file's after it.
+  const double kinetic = records_energy_ ? row[energy_row_offset_] : 0.0;
+  const double energy = records_energy_ ? row[energy_row_offset_ + 2] : 0.0;
   if (window_first_row_ < 0 && compensators_.in_window(t)) window_first_row_ = block_samples_;
   // This sample ends a block: the file's end_sample() writes it and makes it the last
   // whole block, in place of the one the block worker may still be reading.
   const bool ends_block = block_samples_ + 1 == static_cast<long>(ResultFile::block_rows);
   require_file_block_agrees();
   if (ends_block) block_worker_.wait();
+  double* const staged = file_.sample_row();
+  if (row != staged) std::copy(row, row + row_width_, staged);
   file_.end_sample();
   // The sample is in the file: counted with the file's count, before anything else can
   // fail (a CSV write).
@@ -476,10 +582,8 @@ void Recorder::record_evaluation(double t, const VectorX& y) {
   last_sample_time_ = t;
   if (ends_block) hand_over_block();
   if (csv_) csv_->write_row(csv_row_);
-  require_stages(system.data(), stages, t, evaluation);
 
   if (records_energy_) {
-    const double kinetic = energy_.kinetic, energy = energy_.total;
     if (samples_ == 1) initial_energy_ = energy;
     max_kinetic_energy_ = std::max(max_kinetic_energy_, kinetic);
     const double scale = std::max(std::abs(initial_energy_), max_kinetic_energy_);

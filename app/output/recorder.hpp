@@ -3,6 +3,7 @@
 // only what the case asks for is evaluated (reactions cost a product a link after ABA,
 // an extra inverse-dynamics pass with loops, CRBA or a prescribed motion).
 #include <array>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -36,7 +37,8 @@ class Recorder {
            const std::vector<ExtraChannel>& extra_channels = {});
 
   /// Evaluates the scene at (t, y) and records one sample of every channel; after
-  /// evaluate_on_second_thread(), queues (t, y) for that thread instead.
+  /// evaluate_on_second_thread(), queues (t, y) for that thread instead (and, with a
+  /// caller's scene, may evaluate queued samples on it: see there).
   void record(double t, const VectorX& y);
   /// Why a run of `definition` on `scene` must evaluate its samples in line, on the
   /// integrated scene; "" when they may be evaluated on a second build of the scene, on a
@@ -49,9 +51,17 @@ class Recorder {
   /// batches and records them, in order, while the caller integrates on
   /// (docs/performance.md, "The samples evaluated beside the integration"). The
   /// recorder's scene must then be its own: a second build of the case that nothing
-  /// else evaluates. A failure of a sample (NumericalError, OutputError) is thrown by a
-  /// later record() or by record_queued_samples(); the samples after it are dropped.
-  void evaluate_on_second_thread();
+  /// else evaluates. With `caller_scene` (the scene the caller integrates, another build
+  /// of the same case), a batch that fills while the second thread is still on the one
+  /// before is not waited on: the caller evaluates its first samples on `caller_scene`
+  /// until the thread is free, which records them and evaluates the rest
+  /// (docs/performance.md, "Issue #18, twenty-first round"); `caller_scene` is then
+  /// evaluated inside record() and record_queued_samples(), between the caller's own uses,
+  /// at earlier times than its own: the loads must be functions of (t, y) alone, as
+  /// why_samples_in_line() requires for the second build. Not with extra channels.
+  /// A failure of a sample (NumericalError, OutputError) is thrown by a later record() or
+  /// by record_queued_samples(); the samples after it are dropped.
+  void evaluate_on_second_thread(Scene* caller_scene = nullptr);
   /// Records every sample record() has queued, throwing a failure among them: call at the
   /// end of a run (finish() does, but a failure there is no longer the run's).
   void record_queued_samples();
@@ -67,6 +77,8 @@ class Recorder {
   void finish();
 
   long samples() const { return samples_; }
+  /// Samples evaluated on the caller's scene (evaluate_on_second_thread(caller_scene)).
+  long samples_evaluated_by_caller() const { return samples_evaluated_by_caller_; }
   /// Time [s] of the last sample recorded (in the file and the statistics), NaN before the first.
   double last_sample_time() const { return last_sample_time_; }
   /// Largest value recorded in column 0 of a channel, or NaN if there is no such channel
@@ -93,6 +105,24 @@ class Recorder {
   const CompensatorSummary& compensators() const { return compensators_; }
 
  private:
+  struct SampleEnergy {
+    double kinetic = 0.0, potential = 0.0, total = 0.0;  // J
+  };
+  /// A scene the samples are evaluated on, and what the channels' fills read of one
+  /// evaluation besides its stages: one for the recorder's scene and, when the caller
+  /// helps (evaluate_on_second_thread), one for the caller's, used by one thread at a time.
+  struct SampleContext {
+    MultibodySystem* system = nullptr;
+    /// X_world_body of every link (output.bodies; empty otherwise): computed once a sample
+    /// for the body's position, orientation and velocity.
+    AlignedVector<Transform> body_frames;
+    std::vector<JointReaction> reactions;  // of reaction_joints_
+    SampleEnergy energy;                   // output.energy
+    VectorX phi, constraint_velocity;      // workspaces of the drift channels
+  };
+  /// Writes a channel's max(columns, 1) values of the sample evaluated on `sample`'s scene
+  /// at time t [s] into `out`.
+  using FillFunction = std::function<void(SampleContext& sample, double t, double* out)>;
   struct Channel {
     std::string path;
     int columns;  // 0 = scalar series
@@ -101,7 +131,7 @@ class Recorder {
     std::vector<std::string> labels;  // CSV column suffixes
     /// Writes the channel's max(columns, 1) values of a sample; add() moves it to fills_.
     /// Empty for a channel written with others (a force element's outputs).
-    std::function<void(double t, double* out)> fill;
+    FillFunction fill;
     int series = -1;
     /// Over the samples before the evaluation window: with the window's moments
     /// (`response`) they make the whole record's (whole_record_statistics).
@@ -119,7 +149,7 @@ class Recorder {
   /// (its fill), in add()'s order. One indirect call a channel and sample: a force
   /// element's outputs go straight into the row instead (element_row_offsets_).
   struct Fill {
-    std::function<void(double t, double* out)> write;
+    FillFunction write;
     long row_offset;
   };
   void add(Channel channel);
@@ -155,20 +185,40 @@ class Recorder {
   void define_driver_channels();
   /// /forces/<element>/<channel> for every force element that has output channels.
   void define_element_channels();
-  /// The samples queued for the second thread: (t, y) in order.
+  /// The samples queued for the second thread: (t, y) in order, and the rows of the first
+  /// `evaluated` of them, which the caller evaluated on its scene while the thread was busy.
   struct SampleBatch {
     std::vector<double> times;
     std::vector<VectorX> states;  // sized once by evaluate_on_second_thread()
+    // When the caller helps: evaluation_batch x row_width_ values and evaluation_batch x the
+    // compensators' measured values, not zero-filled (a row is read only once written).
+    std::unique_ptr<double[]> rows, measured;
     long count = 0;
+    long evaluated = 0;
+    std::exception_ptr failure;  // of sample `evaluated` on the caller's scene
   };
-  /// Evaluates and records the batch's samples in order (on the evaluation thread, or in
-  /// line by record_queued_samples()); the batch is empty after, even when one fails.
-  void record_batch(SampleBatch& batch);
+  SampleContext make_context(MultibodySystem& system) const;
+  /// The sample's row and the compensators' values from `sample`'s scene, evaluated at
+  /// (t, y) by the caller of this (kinematic analyses) or by evaluate_row. Out of line, as
+  /// commit_row, so that a profile names the two (scripts/instruction_share.py).
+  [[gnu::noinline]] void fill_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured);
+  /// Evaluates `sample`'s scene at (t, y) and fills the sample's row from it.
+  void evaluate_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured);
+  /// Records a filled row in sample order: the compensators' and joint loads' running
+  /// figures, the energy drift, the file (`row` is or is copied to its staged sample), the CSV.
+  [[gnu::noinline]] void commit_row(double t, const double* row, const double* measured);
+  /// Records the batch's samples in order, evaluating on `sample`'s scene those the caller
+  /// did not (on the evaluation thread, or in line by record_queued_samples()); the batch
+  /// is empty after, even when one fails.
+  void record_batch(SampleBatch& batch, SampleContext& sample);
+  /// While the evaluation thread is busy, the caller evaluates the batch's next samples on
+  /// its own scene (if it has one) instead of waiting.
+  void evaluate_while_busy(SampleBatch& batch);
+  /// The full batch goes to the evaluation thread once it has recorded the one before.
+  void hand_over_batch();
   /// Waits for the batch in hand on the evaluation thread; if it failed, the batch being
   /// filled is dropped (its samples come after the failure) and the failure thrown.
   void settle_evaluation();
-  /// The one evaluation and record of a sample, in line or on the evaluation thread.
-  void evaluate_and_record(double t, const VectorX& y);
   /// After evaluate_on_second_thread(), which sizes the batches.
   bool evaluates_beside() const { return !batches_[0].states.empty(); }
 
@@ -181,28 +231,33 @@ class Recorder {
   bool needs_reactions_ = false;
   bool records_energy_ = false;  // output.energy: the energy channels and the drift summary
   std::vector<double> csv_row_;  // the sample's row, kept for the CSV past end_sample()
+  /// Where the energies (kinetic, potential, total: side by side) and each recorded
+  /// joint's reaction force lie in a sample's row, for the drift and the joint loads.
+  long energy_row_offset_ = -1;
+  std::vector<long> reaction_force_row_offsets_;
   long block_samples_ = 0;     // samples of the current block, not yet in the statistics
   long window_first_row_ = -1;  // the block's first sample in the evaluation window (-1: none)
   stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
   std::int64_t window_samples_ = 0;             // samples expected in the evaluation window
-  VectorX phi_, constraint_velocity_;  // workspaces of the drift channels
-  /// X_world_body of every link at the sample being recorded (output.bodies; empty
-  /// otherwise): computed once a sample for the body's position, orientation and velocity.
-  AlignedVector<Transform> body_frames_;
+  bool records_bodies_ = false;    // output.bodies: the contexts keep the body frames
+  bool has_extra_channels_ = false;
   long samples_ = 0;
+  long samples_evaluated_by_caller_ = 0;
   double last_sample_time_ = std::numeric_limits<double>::quiet_NaN();
   double initial_energy_ = 0.0, max_kinetic_energy_ = 0.0, energy_drift_ = 0.0;
   bool energy_is_conserved_ = false;
-  struct SampleEnergy {
-    double kinetic = 0.0, potential = 0.0, total = 0.0;  // J, at the last record()
-  } energy_;
   std::vector<JointLoad> joint_loads_;
   std::vector<int> reaction_joints_;
-  std::vector<JointReaction> reactions_;  // of reaction_joints_, at the sample being recorded
   /// Per force element: where its outputs (one scalar channel each, side by side) lie in
   /// a sample's row, which they are written into; -1 for an element without channels.
   std::vector<long> element_row_offsets_;
   CompensatorSummary compensators_;
+  /// The compensators' values of a sample evaluated on the recorder's scene (in line or on
+  /// the evaluation thread; the caller's go into its batch).
+  std::vector<double> measured_;
+  SampleContext own_;             // the recorder's scene
+  /// The caller's scene, when it helps evaluate (evaluate_on_second_thread(caller_scene)).
+  std::unique_ptr<SampleContext> caller_;
   // The last whole block's statistics, computed on a second thread while the next block's
   // samples are recorded (docs/performance.md, "Recording on two cores"). While it runs it
   // owns the channels' statistics and response accumulators and reads the last whole
@@ -215,13 +270,15 @@ class Recorder {
   // The samples evaluated beside the integration (evaluate_on_second_thread): this thread
   // fills batches_[filling_] while the evaluation thread records the other one, the
   // whole recorder's state but the batch being filled being its own until
-  // settle_evaluation(). 256 samples a batch: a hand-over per ~1 ms of evaluation, and
+  // settle_evaluation(); meanwhile this thread may evaluate into that batch's rows with
+  // caller_, reading of the recorder only what the constructor set (the fills, offsets,
+  // reaction joints, the compensators' element indices). 256 samples a batch: a hand-over per ~1 ms of evaluation, and
   // the run's end waits for at most one batch. Declared after block_worker_, which its job
   // starts: ended first.
   static constexpr long evaluation_batch = 256;
   std::array<SampleBatch, 2> batches_;
   int filling_ = 0;
-  BackgroundWorker evaluation_worker_{[this] { record_batch(batches_[1 - filling_]); }};
+  BackgroundWorker evaluation_worker_{[this] { record_batch(batches_[1 - filling_], own_); }};
 };
 
 }  // namespace heavesim

@@ -84,7 +84,9 @@ int run_command(const RunOptions& options) {
   case_tree.reset();
   Recorder recorder(recording_definition ? *recording_definition : definition,
                     recording_scene ? *recording_scene : scene, file, csv ? &*csv : nullptr);
-  if (recording_scene) recorder.evaluate_on_second_thread();
+  // The integrating thread evaluates samples too, on its own scene between its steps,
+  // whenever a batch of them would otherwise wait for the recorder's thread.
+  if (recording_scene) recorder.evaluate_on_second_thread(&scene);
   std::unique_ptr<Integrator> integrator = make_integrator(solver.integrator, *scene.system);
   if (StopSignals::received()) return stopped_before_the_run(definition.name);
   ProgressLine progress(solver.t_start, solver.t_end, !options.quiet);
@@ -165,6 +167,10 @@ int run_command(const RunOptions& options) {
                "{} samples -> {}\n",
                definition.name, solver.t_end - solver.t_start, wall, (solver.t_end - solver.t_start) / wall,
                statistics.steps, statistics.rhs_evaluations, recorder.samples(), output_path);
+    if (recording_scene)
+      fmt::print("  samples evaluated beside the integration: {} on the recorder's thread, {} on the integrating "
+                 "one while that was busy\n",
+                 recorder.samples() - recorder.samples_evaluated_by_caller(), recorder.samples_evaluated_by_caller());
     if (definition.output.energy && recorder.energy_is_conserved())
       fmt::print("  relative energy drift {:.3g}\n", recorder.relative_energy_drift());
     if (scene.model->has_constraints())

@@ -27,6 +27,7 @@
 #include "app/scene/scene.hpp"
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
+#include "kernel/math/numerical_error.hpp"
 #include "tests/app/h5_file.hpp"
 #include "tests/test_support.hpp"
 
@@ -106,39 +107,90 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
 // second build of the scene, evaluated apart at the same states, and the CSV column for
 // column against the file (%.17g reads back to the same double). 1100 samples: past the
 // staged runs of 64 and the first block of 1024 (its hand-over to the writer and the
-// statistics), recorded in line and, on a build of their own, on the evaluation thread.
+// statistics), recorded in line and, on a build of their own, on the evaluation thread,
+// alone or helped by the caller on a third build (the batches filled while the thread is
+// busy: here every one but the first, as record() only copies states).
 bool same_recorded_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
-void expect_recorded_element_outputs_and_csv(bool on_second_thread) {
-  SCOPED_TRACE(on_second_thread ? "samples evaluated on the second thread" : "samples evaluated in line");
+enum class SampleEvaluation { in_line, second_thread, second_thread_and_caller };
+
+/// Sample k at t = 1 ms k: the scene's initial state scaled by 1 + 1e-5 k and moved by up to
+/// 5 cm (or 0.05 of a velocity's or an element state's unit) on a wave of a different phase
+/// in every coordinate (the joints normalize quaternions): strokes, heights and loads that
+/// vary from sample to sample, for the summary's figures.
+void moving_states(const Scene& scene, int samples, std::vector<double>& times, std::vector<VectorX>& states) {
+  for (int k = 0; k < samples; ++k) {
+    times.push_back(1e-3 * k);
+    VectorX state = scene.initial_state * (1.0 + 1e-5 * k);
+    for (Eigen::Index j = 0; j < state.size(); ++j) state[j] += 0.05 * std::sin(0.037 * k + 0.7 * j);
+    states.push_back(state);
+  }
+}
+
+/// Every numeric attribute of the file's /summary (the compensators', the joint loads', the
+/// energy's), read as double.
+std::map<std::string, double> summary_numbers(const std::string& path) {
+  std::map<std::string, double> numbers;
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  const hid_t summary = H5Gopen2(file, "/summary", H5P_DEFAULT);
+  H5Aiterate2(summary, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+              [](hid_t object, const char* name, const H5A_info_t*, void* found) -> herr_t {
+                const hid_t attribute = H5Aopen(object, name, H5P_DEFAULT);
+                const hid_t type = H5Aget_type(attribute);
+                const H5T_class_t type_class = H5Tget_class(type);
+                double value = 0.0;
+                if ((type_class == H5T_FLOAT || type_class == H5T_INTEGER) &&
+                    H5Aread(attribute, H5T_NATIVE_DOUBLE, &value) >= 0)
+                  (*static_cast<std::map<std::string, double>*>(found))[name] = value;
+                H5Tclose(type);
+                H5Aclose(attribute);
+                return 0;
+              },
+              &numbers);
+  H5Gclose(summary);
+  H5Fclose(file);
+  return numbers;
+}
+
+/// Checks the recorded channels and CSV; returns the file's /summary numbers.
+std::map<std::string, double> expect_recorded_element_outputs_and_csv(SampleEvaluation evaluation) {
+  SCOPED_TRACE(evaluation == SampleEvaluation::in_line         ? "samples evaluated in line"
+               : evaluation == SampleEvaluation::second_thread ? "samples evaluated on the second thread"
+                                                               : "samples evaluated on the second thread and the caller's");
   const CaseDefinition definition =
       load_case(testing::source_path("cases/drilling.yaml"), {"solver.t_end=2", "output.evaluate_after=0"});
   Scene scene = build_scene(definition);
   Scene reference = build_scene(definition);
-  // States near the initial one, scaled by 1 + 1e-5 k (the joints normalize quaternions).
+  Scene callers = build_scene(definition);
   constexpr int samples = 1100;
   std::vector<double> times;
   std::vector<VectorX> states;
-  for (int k = 0; k < samples; ++k) {
-    times.push_back(1e-3 * k);
-    states.push_back(scene.initial_state * (1.0 + 1e-5 * k));
-  }
+  moving_states(scene, samples, times, states);
   const std::string output = temporary("element_channels.h5"), csv_path = temporary("element_channels.csv");
   {
     ResultFile file(output, times.size());
     CsvWriter csv(csv_path);
     Recorder recorder(definition, scene, file, &csv);
-    ASSERT_TRUE(recorder.needs_reactions());
-    if (on_second_thread) recorder.evaluate_on_second_thread();
+    EXPECT_TRUE(recorder.needs_reactions());
+    if (evaluation == SampleEvaluation::second_thread) recorder.evaluate_on_second_thread();
+    if (evaluation == SampleEvaluation::second_thread_and_caller) recorder.evaluate_on_second_thread(&callers);
     for (std::size_t k = 0; k < times.size(); ++k) recorder.record(times[k], states[k]);
     recorder.record_queued_samples();
+    EXPECT_EQ(recorder.samples(), samples);
+    if (evaluation == SampleEvaluation::second_thread_and_caller) {
+      EXPECT_GT(recorder.samples_evaluated_by_caller(), 0);
+    } else {
+      EXPECT_EQ(recorder.samples_evaluated_by_caller(), 0);
+    }
     recorder.finish();
     file.mark_complete();
     file.close();
     csv.close();
   }
+  const std::map<std::string, double> summary = summary_numbers(output);
   H5File file(output);
-  ASSERT_TRUE(file.ok());
+  EXPECT_TRUE(file.ok());
+  if (!file.ok()) return summary;
   MultibodySystem& system = *reference.system;
   std::map<std::string, std::vector<double>> series;
   int element_channels = 0, mismatches = 0;
@@ -152,7 +204,8 @@ void expect_recorded_element_outputs_and_csv(bool on_second_thread) {
       for (std::size_t c = 0; c < values.size(); ++c) {
         const std::string dataset = "/forces/" + element.name() + "/" + element.channels()[c].name;
         if (!series.count(dataset)) {
-          ASSERT_TRUE(file.exists(dataset)) << dataset;
+          EXPECT_TRUE(file.exists(dataset)) << dataset;
+          if (!file.exists(dataset)) return summary;
           series[dataset] = file.read(dataset);
         }
         if (!same_recorded_number(series[dataset].at(k), values[c]) && ++mismatches <= 5)
@@ -218,7 +271,8 @@ void expect_recorded_element_outputs_and_csv(bool on_second_thread) {
     std::string previous;
     std::size_t column_of_dataset = 0;
     for (std::string value; std::getline(values, value, ','); ++column) {
-      ASSERT_LT(column, datasets.size());
+      EXPECT_LT(column, datasets.size());
+      if (column >= datasets.size()) return summary;
       column_of_dataset = datasets[column] == previous ? column_of_dataset + 1 : 0;
       previous = datasets[column];
       const std::vector<double>& numbers = series.at(datasets[column]);
@@ -233,11 +287,68 @@ void expect_recorded_element_outputs_and_csv(bool on_second_thread) {
   EXPECT_EQ(row, times.size());
   std::filesystem::remove(output);
   std::filesystem::remove(csv_path);
+  return summary;
 }
 
 TEST(Recorder, ElementChannelsHoldTheElementsOutputsAndTheCsvTheFilesNumbers) {
-  expect_recorded_element_outputs_and_csv(false);
-  expect_recorded_element_outputs_and_csv(true);
+  const std::map<std::string, double> in_line = expect_recorded_element_outputs_and_csv(SampleEvaluation::in_line);
+  // The compensators' figures (strokes, pressures, efficiency), the joint loads and the
+  // energy change, taken in sample order from values measured on whichever scene
+  // evaluated the sample: the same numbers as in line.
+  EXPECT_GT(in_line.count("passive_stroke_max_m"), 0u);
+  EXPECT_GT(in_line.count("active_force_max_abs_N"), 0u);
+  EXPECT_GT(in_line.count("relative_energy_change"), 0u);
+  EXPECT_GT(in_line.size(), 20u);
+  for (const SampleEvaluation beside : {SampleEvaluation::second_thread, SampleEvaluation::second_thread_and_caller}) {
+    const std::map<std::string, double> summary = expect_recorded_element_outputs_and_csv(beside);
+    EXPECT_EQ(summary.size(), in_line.size());
+    for (const auto& [name, value] : in_line)
+      EXPECT_TRUE(summary.count(name) && same_recorded_number(summary.at(name), value))
+          << name << ": " << value << " in line, " << (summary.count(name) ? summary.at(name) : std::nan(""));
+  }
+}
+
+// A sample whose evaluation fails (a speed that is not a number: no finite acceleration)
+// ends the record there, the samples before it in the file and none after, whichever
+// thread evaluated it: in line, the evaluation thread, or the caller on its own scene
+// (sample 259 is the fourth of the second batch, which the caller starts while the thread
+// is on the first). The failure is thrown by a later record() or record_queued_samples().
+TEST(Recorder, ASampleThatFailsEndsTheRecordWhereverItWasEvaluated) {
+  const CaseDefinition definition =
+      load_case(testing::source_path("cases/drilling.yaml"), {"solver.t_end=2", "output.evaluate_after=0"});
+  Scene scene = build_scene(definition);
+  Scene callers = build_scene(definition);
+  constexpr int samples = 1100, failing = 259;
+  std::vector<double> times;
+  std::vector<VectorX> states;
+  moving_states(scene, samples, times, states);
+  states[failing][scene.model->nq] = std::nan("");  // the first speed
+  for (const SampleEvaluation evaluation :
+       {SampleEvaluation::in_line, SampleEvaluation::second_thread, SampleEvaluation::second_thread_and_caller}) {
+    SCOPED_TRACE(static_cast<int>(evaluation));
+    const std::string output = temporary("failing_sample.h5");
+    ResultFile file(output, times.size());
+    Recorder recorder(definition, scene, file, nullptr);
+    if (evaluation == SampleEvaluation::second_thread) recorder.evaluate_on_second_thread();
+    if (evaluation == SampleEvaluation::second_thread_and_caller) recorder.evaluate_on_second_thread(&callers);
+    double failed_at = -1.0;
+    try {
+      for (std::size_t k = 0; k < times.size(); ++k) recorder.record(times[k], states[k]);
+      recorder.record_queued_samples();
+    } catch (const NumericalError& error) {
+      failed_at = error.time();
+    }
+    EXPECT_EQ(failed_at, times[failing]);
+    EXPECT_EQ(recorder.samples(), failing);
+    EXPECT_EQ(recorder.last_sample_time(), times[failing - 1]);
+    if (evaluation == SampleEvaluation::second_thread_and_caller) {
+      EXPECT_GT(recorder.samples_evaluated_by_caller(), 0);
+    }
+    recorder.record_queued_samples();  // nothing more: the samples after the failure were dropped
+    EXPECT_EQ(recorder.samples(), failing);
+    file.close();
+    std::filesystem::remove(output);
+  }
 }
 
 TEST(ResultFile, SignalStopsTheRunAndLeavesAReadableIncompleteFile) {

@@ -1,6 +1,7 @@
 """The recording threads checked by a race detector that does not share our reasoning.
 
-A run records on four threads: the integrating one, the recorder's evaluation of the
+A run records on four threads: the integrating one (which also evaluates samples, on its
+own scene, while the next thread is busy), the recorder's evaluation of the
 samples (on a second build of the scene, a batch of states at a time), the result file's
 block writer and the recorder's block statistics (app/output/background_worker.hpp,
 docs/architecture.md). Their correctness rests on a handshake: a worker reads only what
@@ -74,6 +75,15 @@ class HelgrindSeesNoRace(unittest.TestCase):
             # Every number but the run's own timing, bit for bit, under another schedule.
             differences = compare_runs.differing_numbers(ordinary, checked)
             self.assertLessEqual(set(differences), {"summary@wall_time_s", "summary@real_time_factor"}, differences)
+
+    def test_the_caller_evaluating_beside_the_samples_thread(self):
+        # tests/app/test_result_file.cpp: the integrating thread evaluates a batch's first
+        # samples on its own scene while the samples' thread records the batch before, and
+        # hands the rows over; a failure on either thread ends the record in sample order.
+        code, output, report = helgrind(
+            [TESTS_BINARY, "--gtest_filter=Recorder.ASampleThatFailsEndsTheRecordWhereverItWasEvaluated"])
+        self.assert_clean(code, report)
+        self.assertIn("[  PASSED  ] 1 test", output)
 
     def test_the_worker_on_its_own(self):
         # The worker's own tests (tests/app/test_background_worker.cpp): its jobs'
