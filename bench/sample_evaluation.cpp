@@ -7,11 +7,16 @@
 //  * drilling_sample_evaluation/reactions:1: MultibodySystem::evaluate(t, y, reactions) at
 //    those states, one after another: kinematics, loads, the articulated-body accelerations
 //    and the joints' reactions (as the run's channels ask); reactions:0 without them.
-//  * drilling_sample_record: the same states through Recorder::record on the same scene,
-//    in line (the evaluation, then every channel into the sample's row, the energy, the
-//    joint loads, and at every 1,024th sample the hand-over of a block to the block writer
-//    and statistics threads), into a result file with the run's layout; one iteration
-//    records the whole run. The recorder and file are made, and closed, untimed.
+//  * drilling_sample_record/threads:1: the same states through Recorder::record on the
+//    same scene, in line (the evaluation, then every channel into the sample's row, the
+//    energy, the joint loads, and at every 1,024th sample the hand-over of a block to the
+//    block writer and statistics threads), into a result file with the run's layout; one
+//    iteration records the whole run. The recorder and file are made, and closed, untimed.
+//    threads:2: the same with the samples evaluated beside, as in a run
+//    (Recorder::evaluate_on_second_thread on a second build), this thread only copying
+//    the states; threads:3: and this thread evaluating on a third build whenever the
+//    samples' thread is busy, as a run's integrating thread does (here it has nothing else
+//    to do, so it takes about half). Timed to the last sample recorded (record_queued_samples).
 // Counters: seconds a sample (the evaluation thread's share of the run is 12,001 times
 // it). Run:
 //   build/bench/heavesim_sample_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
@@ -73,6 +78,8 @@ void drilling_sample_evaluation(benchmark::State& state) {
 void drilling_sample_record(benchmark::State& state) {
   const DrillingSamples& samples = drilling_samples();
   Scene scene = build_scene(samples.definition);
+  Scene callers = build_scene(samples.definition);
+  const int threads = static_cast<int>(state.range(0));
   const char* directory = std::getenv("HEAVESIM_BENCH_DIR");
   const std::string path =
       (std::filesystem::path(directory != nullptr ? directory : "/tmp") / "heavesim_sample_bench.h5").string();
@@ -85,9 +92,12 @@ void drilling_sample_record(benchmark::State& state) {
     file.reset();  // closes the last iteration's file
     file.emplace(path, sample_count);
     recorder.emplace(samples.definition, scene, *file, nullptr);
+    if (threads == 2) recorder->evaluate_on_second_thread();
+    if (threads == 3) recorder->evaluate_on_second_thread(&callers);
     file->flush();  // the layout on disk, as before a run's first step
     state.ResumeTiming();
     for (std::size_t k = 0; k < samples.times.size(); ++k) recorder->record(samples.times[k], samples.states[k]);
+    recorder->record_queued_samples();
   }
   recorder.reset();  // after the timed loop: untimed
   file.reset();
@@ -98,7 +108,7 @@ void drilling_sample_record(benchmark::State& state) {
 }
 
 BENCHMARK(drilling_sample_evaluation)->ArgName("reactions")->Arg(1)->Arg(0);
-BENCHMARK(drilling_sample_record)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(drilling_sample_record)->ArgName("threads")->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace heavesim::bench
