@@ -33,14 +33,19 @@ void CompensatorSummary::measure(const MultibodySystem& system, double t, const 
     const PneumaticCompensator& element = element_of<PneumaticCompensator>(system, p.index);
     const PneumaticState& s = element.evaluated(t, model, data, y.segment(p.offset, element.state_size()));
     // The moving side sits (mid-stroke + s) along the stroke axis from the base.
-    const StrokeAxis& axis = element.axis();
-    const BaseMotion base = base_motion(axis, model, data);
-    const double base_height = base.position_world.z();
     *values++ = s.stroke;
     *values++ = s.gas_pressure;
     *values++ = s.gas_temperature;
+    // The heights only where observe() reads them: in the evaluation window.
+    double base_height = std::numeric_limits<double>::quiet_NaN(), load_height = base_height;
+    if (in_window(t)) {
+      const StrokeAxis& axis = element.axis();
+      const BaseMotion base = base_motion(axis, model, data);
+      base_height = base.position_world.z();
+      load_height = base_height + base.axis_world.z() * (axis.mid_stroke + s.stroke);
+    }
     *values++ = base_height;
-    *values++ = base_height + base.axis_world.z() * (axis.mid_stroke + s.stroke);
+    *values++ = load_height;
   }
   for (const Contact& c : contacts_) *values++ = element_of<GroundContact>(system, c.index).state(data).force;
   for (const Active& a : active_) {

@@ -35,8 +35,9 @@ class CompensatorSummary {
   int measured_values() const { return measured_values_; }
   /// After `system.evaluate(t, y)`: what observe() takes of that sample (each passive
   /// compensator's stroke [m], gas pressure [Pa] and temperature [K], base and load heights
-  /// [m]; each ground contact's force [N]; each active compensator's force [N], control
-  /// error [m] and supply power [W]) into `values` (measured_values()). `system` is the
+  /// [m] in the evaluation window, NaN before it; each ground contact's force [N]; each
+  /// active compensator's force [N], control error [m] and supply power [W]) into `values`
+  /// (measured_values()). `system` is the
   /// summary's or another build of the same case (its elements at the same places): the
   /// recorder evaluates its samples on two scenes at once. Reads nothing of the summary's
   /// running state, so any thread may measure while another observes.

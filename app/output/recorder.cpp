@@ -363,8 +363,7 @@ void Recorder::define_element_channels() {
 
 void Recorder::record(double t, const VectorX& y) {
   if (!evaluates_beside()) {
-    evaluate_row(own_, t, y, file_.sample_row(), measured_.data());
-    commit_row(t, file_.sample_row(), measured_.data());
+    evaluate_and_record(own_, t, y);
     return;
   }
   SampleBatch& batch = batches_[filling_];
@@ -425,8 +424,10 @@ void Recorder::evaluate_on_second_thread(Scene* caller_scene) {
     batch.times.assign(evaluation_batch, 0.0);
     batch.states.assign(evaluation_batch, VectorX::Zero(scene_.system->size()));
     if (!caller_) continue;
-    batch.rows.reset(new double[evaluation_batch * row_width_]);
-    batch.measured.reset(new double[evaluation_batch * compensators_.measured_values()]);
+    batch.row_width = row_width_;
+    batch.measured_width = compensators_.measured_values();
+    batch.rows.reset(new double[evaluation_batch * batch.row_width]);
+    batch.measured.reset(new double[evaluation_batch * batch.measured_width]);
   }
 }
 
@@ -454,12 +455,10 @@ void Recorder::evaluate_while_busy(SampleBatch& batch) {
   // integrates, free between the integrator's steps: evaluated at a sample, it gives that
   // sample's numbers, as it does when every sample is evaluated in line.
   if (!caller_) return;
-  const long measured_width = compensators_.measured_values();
   while (batch.evaluated < batch.count && !batch.failure && evaluation_worker_.busy()) {
     const long k = batch.evaluated;
     try {
-      evaluate_row(*caller_, batch.times[k], batch.states[k], batch.rows.get() + k * row_width_,
-                   batch.measured.get() + k * measured_width);
+      evaluate_row(*caller_, batch.times[k], batch.states[k], batch.row(k), batch.measured_values(k));
     } catch (...) {
       batch.failure = std::current_exception();  // thrown by the thread after the samples before it
       return;
@@ -472,16 +471,17 @@ void Recorder::record_batch(SampleBatch& batch, SampleContext& sample) {
   const long count = std::exchange(batch.count, 0);
   const long evaluated = std::exchange(batch.evaluated, 0);
   const std::exception_ptr failure = std::exchange(batch.failure, nullptr);
-  const long measured_width = compensators_.measured_values();
   for (long k = 0; k < evaluated; ++k) {
-    commit_row(batch.times[k], batch.rows.get() + k * row_width_, batch.measured.get() + k * measured_width);
+    commit_row(batch.times[k], batch.row(k), batch.measured_values(k));
     ++samples_evaluated_by_caller_;
   }
   if (failure) std::rethrow_exception(failure);
-  for (long k = evaluated; k < count; ++k) {
-    evaluate_row(sample, batch.times[k], batch.states[k], file_.sample_row(), measured_.data());
-    commit_row(batch.times[k], file_.sample_row(), measured_.data());
-  }
+  for (long k = evaluated; k < count; ++k) evaluate_and_record(sample, batch.times[k], batch.states[k]);
+}
+
+void Recorder::evaluate_and_record(SampleContext& sample, double t, const VectorX& y) {
+  evaluate_row(sample, t, y, file_.sample_row(), measured_.data());
+  commit_row(t, file_.sample_row(), measured_.data());
 }
 
 void Recorder::settle_evaluation() {

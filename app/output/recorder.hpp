@@ -193,9 +193,12 @@ class Recorder {
     // When the caller helps: evaluation_batch x row_width_ values and evaluation_batch x the
     // compensators' measured values, not zero-filled (a row is read only once written).
     std::unique_ptr<double[]> rows, measured;
+    long row_width = 0, measured_width = 0;
     long count = 0;
     long evaluated = 0;
     std::exception_ptr failure;  // of sample `evaluated` on the caller's scene
+    double* row(long k) { return rows.get() + k * row_width; }
+    double* measured_values(long k) { return measured.get() + k * measured_width; }
   };
   SampleContext make_context(MultibodySystem& system) const;
   /// The sample's row and the compensators' values from `sample`'s scene, evaluated at
@@ -204,6 +207,9 @@ class Recorder {
   [[gnu::noinline]] void fill_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured);
   /// Evaluates `sample`'s scene at (t, y) and fills the sample's row from it.
   void evaluate_row(SampleContext& sample, double t, const VectorX& y, double* row, double* measured);
+  /// evaluate_row into the file's staged row, then commit_row: one sample in line, or on
+  /// the evaluation thread.
+  void evaluate_and_record(SampleContext& sample, double t, const VectorX& y);
   /// Records a filled row in sample order: the compensators' and joint loads' running
   /// figures, the energy drift, the file (`row` is or is copied to its staged sample), the CSV.
   [[gnu::noinline]] void commit_row(double t, const double* row, const double* measured);
