@@ -31,7 +31,9 @@ PARTS = [  # names that do not nest in a run (load_case is resolved_case_tree + 
     ("set-up", tuple("heavesim::" + name for name in SET_UP_FUNCTIONS)),
 ]
 DETAILS = [
-    ("recorder constructor (channels, datasets, attributes)", ("Recorder::Recorder",)),
+    ("recorder constructor (channels)", ("Recorder::Recorder",)),
+    ("the result file's layout (Recorder::create_layout: datasets, attributes, first flush; on the"
+     " samples' thread when they are evaluated beside)", ("Recorder::create_layout",)),
     ("the helper threads (BackgroundWorker::loop: samples, statistics, writes)", ("BackgroundWorker::loop",)),
     ("the samples' channels and their record in order (Recorder::fill_row, Recorder::commit_row;"
      " their evaluation is beside it)", ("Recorder::fill_row", "Recorder::commit_row")),
@@ -102,7 +104,7 @@ def main():
     main_shares.append(("recording (the rest)", main_thread - sum(count for _, count in main_shares)))
     print(f"{main_thread:,} of them on the integrating thread (the helper threads' {helpers:,} run beside it):")
     # That thread evaluates samples too whenever the samples' thread is busy
-    # (Recorder::evaluate_while_busy): how many depends on the schedule, and Valgrind runs
+    # (Recorder::evaluate_next_ready_sample): how many depends on the schedule, and Valgrind runs
     # one thread at a time, so it takes more of them here than in a run (`heavesim run`
     # prints the run's split).
     print("  (with the samples that thread evaluated while the samples' thread was busy: under"

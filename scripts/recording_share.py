@@ -30,7 +30,9 @@ PARTS = [
 ]
 # Named pieces of the recording, reported beside the three shares (a stack may hold several).
 DETAILS = [
-    ("recorder constructor (channels, datasets, attributes)", "Recorder::Recorder"),
+    ("recorder constructor (channels)", "Recorder::Recorder"),
+    ("the result file's layout (Recorder::create_layout: datasets, attributes, first flush)",
+     "Recorder::create_layout"),
     ("per-sample evaluation (MultibodySystem::evaluate)", "MultibodySystem::evaluate"),
     ("per-sample channels (Recorder::fill_row)", "Recorder::fill_row"),
     ("per-sample record in order (Recorder::commit_row)", "Recorder::commit_row"),
@@ -40,6 +42,8 @@ DETAILS = [
 # The compiler inlines the jobs themselves (record_batch, write_last_blocks) into the
 # worker's lambda: what they call names them.
 HELPERS = [
+    ("the result file's layout (Recorder::create_layout), the samples' thread's first job",
+     ("Recorder::create_layout",)),
     ("samples' evaluation (MultibodySystem::evaluate, Recorder::fill_row, Recorder::commit_row)",
      ("MultibodySystem::evaluate", "Recorder::fill_row", "Recorder::commit_row", "Recorder::record_batch")),
     ("block statistics (Recorder::add_block_statistics)", ("Recorder::add_block_statistics",)),

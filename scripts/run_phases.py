@@ -7,10 +7,12 @@ and leaves the functions that bound them, from Linux uprobes (Debian's linux-per
 A uprobe is hit a few times a run (the bounding functions are entered once or twice), so
 the run keeps its speed (unlike a sampling profile with call graphs, which doubles the
 drilling run's wall time and cannot say when a thread waits). Per run: process start (exec
-to the first read_case), case and scenes (the case read, the scene built, the second scene
-for the samples' evaluation), the recorder's constructor (channels, the result file's
-layout), before the first step (metadata, the layout's first flush, the integrator made),
-run_simulation (the integration, and the waits for the samples' evaluation beside it), the
+to the first read_case), case and scenes (the case read, the scene built, the result file
+created with its metadata, the second scene for the samples' evaluation), the recorder's
+constructor (its channels), before the first step (the sample batches, the integrator made,
+and the result file's layout when the samples are evaluated in line; beside, the layout is
+the samples' thread's first job, inside run_simulation), run_simulation (the integration,
+and the waits for the samples' evaluation beside it), the
 end of the run (Recorder::finish: the last block's statistics, the summary), the file's
 close, and the exit. Prints each phase's median over the runs and its share of the median
 total; docs/performance.md quotes it.
@@ -35,8 +37,8 @@ FUNCTIONS = {
 PHASES = [  # name, from (event), to (event); events are "<function>>" (entry) or "<function><" (return)
     ("process start (exec to reading the case)", "exec", "read_case>"),
     ("case and scenes", "read_case>", "recorder>"),
-    ("recorder constructor (channels, file layout)", "recorder>", "recorder<"),
-    ("before the first step (metadata, first flush)", "recorder<", "run_simulation>"),
+    ("recorder constructor (channels)", "recorder>", "recorder<"),
+    ("before the first step (batches, integrator; the layout if in line)", "recorder<", "run_simulation>"),
     ("run_simulation (integration, waits for the samples)", "run_simulation>", "run_simulation<"),
     ("after the integration", "run_simulation<", "finish>"),
     ("end of run (Recorder::finish)", "finish>", "finish<"),

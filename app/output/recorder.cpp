@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "io/hdf5/hdf5_error.hpp"
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
@@ -117,8 +118,8 @@ Recorder::Recorder(const CaseDefinition& definition, Scene& scene, ResultFile& f
     bodies += (i > 1 ? "," : "") + model.links[i].name;
     joints += (i > 1 ? "," : "") + model.joints[i].name;
   }
-  if (definition.output.bodies) file_.set_attribute("/bodies", "order", bodies);
-  if (definition.output.joints || definition.output.reactions) file_.set_attribute("/joints", "order", joints);
+  if (definition.output.bodies) group_orders_.emplace_back("/bodies", bodies);
+  if (definition.output.joints || definition.output.reactions) group_orders_.emplace_back("/joints", joints);
   if (csv_) {
     std::vector<std::string> header;
     // "joints/hook/q [m]": the units of the HDF5 attribute, per column.
@@ -152,16 +153,35 @@ void Recorder::add(Channel channel) {
   channel.row_offset = row_width_;
   row_width_ += width;
   if (channel.fill) fills_.push_back({std::move(channel.fill), channel.row_offset});
-  // The recorder's row is the file's staged sample: the file holds its series only
-  // (require_file_block_agrees checks the widths at every sample).
-  channel.series = file_.add_series(channel.path, channel.columns, channel.units, channel.description);
-  // The statistics exist from the start, NaN until finish() overwrites them in place
-  // (after the layout is published, a series' object header must not grow:
-  // app/output/result_file.hpp).
-  const std::vector<std::string> names = statistic_names(channel);
-  file_.set_record_attribute(channel.series, "statistics", names,
-                             std::vector<double>(names.size() * width, std::nan("")));
   channels_.push_back(std::move(channel));
+}
+
+void Recorder::lay_out_file() {
+  if (std::exchange(layout_started_, true)) throw std::logic_error("Recorder: the file is laid out once");
+  if (!evaluates_beside()) {
+    create_layout();
+    return;
+  }
+  // The thread's first job; the batches wait for it (hand_over_batch).
+  layout_pending_ = true;
+  evaluation_worker_.start();
+}
+
+void Recorder::create_layout() {
+  hdf5::report_errors_by_return_codes();  // on the evaluation thread too
+  for (Channel& channel : channels_) {
+    // The recorder's row is the file's staged sample: the file holds its series only, in
+    // the channels' order (require_file_block_agrees checks the widths at every sample).
+    channel.series = file_.add_series(channel.path, channel.columns, channel.units, channel.description);
+    // The statistics exist from the start, NaN until finish() overwrites them in place
+    // (after the layout is published, a series' object header must not grow:
+    // app/output/result_file.hpp).
+    const std::vector<std::string> names = statistic_names(channel);
+    file_.set_record_attribute(channel.series, "statistics", names,
+                               std::vector<double>(names.size() * std::max(channel.columns, 1), std::nan("")));
+  }
+  for (const auto& [group, order] : group_orders_) file_.set_attribute(group, "order", order);
+  file_.flush();  // the layout on disk: the file appears under its name
 }
 
 void Recorder::define_channels(const CaseDefinition& definition) {
@@ -362,6 +382,7 @@ void Recorder::define_element_channels() {
 }
 
 void Recorder::record(double t, const VectorX& y) {
+  require_layout();
   if (!evaluates_beside()) {
     evaluate_and_record(own_, t, y);
     return;
@@ -399,6 +420,7 @@ std::string Recorder::why_samples_in_line(const CaseDefinition& definition, cons
 
 void Recorder::evaluate_on_second_thread(Scene* caller_scene) {
   if (samples_ > 0) throw std::logic_error("Recorder: evaluate_on_second_thread after the first sample");
+  if (evaluates_beside()) throw std::logic_error("Recorder: evaluate_on_second_thread twice");
   if (caller_scene) {
     // The fills and the compensators' measures read the caller's scene by index: it must
     // be a build of the same case (the same links, constraint rows and elements, in the
@@ -420,6 +442,7 @@ void Recorder::evaluate_on_second_thread(Scene* caller_scene) {
     if (has_extra_channels_) throw std::logic_error("Recorder: extra channels are read on one thread only");
     caller_ = std::make_unique<SampleContext>(make_context(*caller_scene->system));
   }
+  batches_.resize(evaluation_batches);
   for (SampleBatch& batch : batches_) {
     batch.times.assign(evaluation_batch, 0.0);
     batch.states.assign(evaluation_batch, VectorX::Zero(scene_.system->size()));
@@ -429,6 +452,8 @@ void Recorder::evaluate_on_second_thread(Scene* caller_scene) {
     batch.rows.reset(new double[evaluation_batch * batch.row_width]);
     batch.measured.reset(new double[evaluation_batch * batch.measured_width]);
   }
+  for (std::vector<int>* list : {&free_, &ready_, &handed_}) list->reserve(evaluation_batches);
+  drop_batches();
 }
 
 Recorder::SampleContext Recorder::make_context(MultibodySystem& system) const {
@@ -442,29 +467,75 @@ Recorder::SampleContext Recorder::make_context(MultibodySystem& system) const {
 }
 
 void Recorder::hand_over_batch() {
-  evaluate_while_busy(batches_[filling_]);
-  settle_evaluation();  // the batch before is recorded: the worker takes this one
-  filling_ = 1 - filling_;
-  evaluation_worker_.start();
+  ready_.push_back(std::exchange(filling_, -1));
+  // The caller would wait here for the thread to record the batches before; it evaluates
+  // the ready batches' samples instead, oldest first, glancing at the thread between
+  // samples, and then integrates on into a free batch: the thread evaluates what is left
+  // when it takes them. The caller's scene is the one it integrates, free between the
+  // integrator's steps: evaluated at a sample, it gives that sample's numbers, as it does
+  // when every sample is evaluated in line.
+  while (evaluation_worker_.busy()) {
+    if (evaluate_next_ready_sample()) continue;
+    if (!free_.empty()) {
+      filling_ = take_free_batch();
+      return;
+    }
+    break;  // nothing left to do but wait for the thread
+  }
+  start_ready_batches();
+  filling_ = take_free_batch();
 }
 
-void Recorder::evaluate_while_busy(SampleBatch& batch) {
-  // The caller would wait here for the thread to record the batch before; it evaluates
-  // this batch's samples instead, from the first, until the thread is free (a glance at
-  // its state between samples), and the thread evaluates the rest. Its scene is the one it
-  // integrates, free between the integrator's steps: evaluated at a sample, it gives that
-  // sample's numbers, as it does when every sample is evaluated in line.
-  if (!caller_) return;
-  while (batch.evaluated < batch.count && !batch.failure && evaluation_worker_.busy()) {
+bool Recorder::evaluate_next_ready_sample() {
+  if (!caller_) return false;
+  for (const int index : ready_) {
+    SampleBatch& batch = batches_[index];
+    if (batch.failure) return false;  // the samples after it are dropped
+    if (batch.evaluated == batch.count) continue;
     const long k = batch.evaluated;
     try {
       evaluate_row(*caller_, batch.times[k], batch.states[k], batch.row(k), batch.measured_values(k));
+      ++batch.evaluated;
     } catch (...) {
       batch.failure = std::current_exception();  // thrown by the thread after the samples before it
-      return;
     }
-    ++batch.evaluated;
+    return true;
   }
+  return false;
+}
+
+void Recorder::start_ready_batches() {
+  settle_evaluation();
+  free_.insert(free_.end(), handed_.begin(), handed_.end());
+  handed_.swap(ready_);
+  ready_.clear();
+  evaluation_worker_.start();
+  if (!free_.empty()) return;
+  // Every batch was ready (the thread was on the layout all along): the caller waits for
+  // them to be recorded, having none left to fill.
+  settle_evaluation();
+  free_.insert(free_.end(), handed_.begin(), handed_.end());
+  handed_.clear();
+}
+
+int Recorder::take_free_batch() {
+  const int index = free_.back();
+  free_.pop_back();
+  return index;
+}
+
+void Recorder::drop_batches() {
+  free_.clear();
+  ready_.clear();
+  handed_.clear();
+  // Taken last in, first out: batch 0 first.
+  for (int index = evaluation_batches - 1; index >= 0; --index) {
+    SampleBatch& batch = batches_[index];
+    batch.count = batch.evaluated = 0;
+    batch.failure = nullptr;
+    free_.push_back(index);
+  }
+  filling_ = take_free_batch();
 }
 
 void Recorder::record_batch(SampleBatch& batch, SampleContext& sample) {
@@ -488,21 +559,37 @@ void Recorder::settle_evaluation() {
   try {
     evaluation_worker_.wait();
   } catch (...) {
-    SampleBatch& dropped = batches_[filling_];
-    dropped.count = dropped.evaluated = 0;
-    dropped.failure = nullptr;
+    drop_batches();
     throw;
   }
 }
 
 void Recorder::record_queued_samples() {
+  require_layout();
   if (!evaluates_beside()) return;
-  evaluate_while_busy(batches_[filling_]);
+  if (batches_[filling_].count > 0) ready_.push_back(std::exchange(filling_, -1));
+  while (evaluation_worker_.busy() && evaluate_next_ready_sample()) {
+  }
   settle_evaluation();
-  record_batch(batches_[filling_], own_);  // in line: the worker is idle
+  free_.insert(free_.end(), handed_.begin(), handed_.end());
+  handed_.clear();
+  // In line, the thread being idle: the ready batches' rows the caller evaluated are
+  // recorded, the rest evaluated on the recorder's scene.
+  for (const int index : ready_) {
+    try {
+      record_batch(batches_[index], own_);
+    } catch (...) {
+      drop_batches();
+      throw;
+    }
+    free_.push_back(index);
+  }
+  ready_.clear();
+  if (filling_ < 0) filling_ = take_free_batch();
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
+  require_layout();
   fill_row(own_, t, y, file_.sample_row(), measured_.data());
   commit_row(t, file_.sample_row(), measured_.data());
 }

@@ -2,12 +2,12 @@
 // Decides which channels a case records and writes them at every output time:
 // only what the case asks for is evaluated (reactions cost a product a link after ABA,
 // an extra inverse-dynamics pass with loops, CRBA or a prescribed motion).
-#include <array>
 #include <exception>
 #include <functional>
 #include <limits>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/case/case_definition.hpp"
@@ -32,9 +32,19 @@ class Recorder {
     std::string description;
     std::function<double()> value;
   };
-  /// `csv` may be null (not written). The recorder's channels are the file's series.
+  /// `csv` may be null (not written). The recorder's channels are the file's series,
+  /// which lay_out_file() creates: the constructor does not touch the file.
   Recorder(const CaseDefinition& definition, Scene& scene, ResultFile& file, CsvWriter* csv,
            const std::vector<ExtraChannel>& extra_channels = {});
+
+  /// Creates the file's series (datasets; units, description and the statistics, NaN until
+  /// finish(); the groups' order) and flushes them: the file appears under its name. After
+  /// evaluate_on_second_thread() it is the recorder's thread's first job, done while the
+  /// caller integrates its first steps (their samples wait in batches meanwhile, evaluated
+  /// by the caller when it has a scene: docs/performance.md, "Issue #18, twenty-second
+  /// round"), and a failure to write is thrown as a sample's is, by a later record(); else
+  /// it is done here. The first sample (or finish()) lays the file out if not called.
+  void lay_out_file();
 
   /// Evaluates the scene at (t, y) and records one sample of every channel; after
   /// evaluate_on_second_thread(), queues (t, y) for that thread instead (and, with a
@@ -59,6 +69,8 @@ class Recorder {
   /// evaluated inside record() and record_queued_samples(), between the caller's own uses,
   /// at earlier times than its own: the loads must be functions of (t, y) alone, as
   /// why_samples_in_line() requires for the second build. Not with extra channels.
+  /// Up to `evaluation_batches` batches may wait for the thread: while it is busy, the
+  /// caller evaluates the waiting ones and integrates on into a free one.
   /// A failure of a sample (NumericalError, OutputError) is thrown by a later record() or
   /// by record_queued_samples(); the samples after it are dropped.
   void evaluate_on_second_thread(Scene* caller_scene = nullptr);
@@ -153,6 +165,14 @@ class Recorder {
     long row_offset;
   };
   void add(Channel channel);
+  /// The file's series of the channels, in add()'s order, and the groups' order attributes;
+  /// then the file's first flush (lay_out_file: here or on the evaluation thread). Out of
+  /// line, so that a profile names it (scripts/instruction_share.py).
+  [[gnu::noinline]] void create_layout();
+  /// lay_out_file() unless it has been called.
+  void require_layout() {
+    if (!layout_started_) lay_out_file();
+  }
   /// The whole record's minimum, maximum, mean and standard deviation of every column:
   /// the samples before the window merged with the window's (Pébay 2008, eq. 3.1).
   static RunningStatistics whole_record_statistics(const Channel& channel);
@@ -217,16 +237,25 @@ class Recorder {
   /// did not (on the evaluation thread, or in line by record_queued_samples()); the batch
   /// is empty after, even when one fails.
   void record_batch(SampleBatch& batch, SampleContext& sample);
-  /// While the evaluation thread is busy, the caller evaluates the batch's next samples on
-  /// its own scene (if it has one) instead of waiting.
-  void evaluate_while_busy(SampleBatch& batch);
-  /// The full batch goes to the evaluation thread once it has recorded the one before.
+  /// The full batch joins the ready ones. While the evaluation thread is busy the caller
+  /// evaluates the ready batches' samples (with a scene of its own) and then fills a free
+  /// batch if there is one; otherwise (or once the thread is idle) every ready batch goes
+  /// to the thread, after the ones before are recorded.
   void hand_over_batch();
-  /// Waits for the batch in hand on the evaluation thread; if it failed, the batch being
-  /// filled is dropped (its samples come after the failure) and the failure thrown.
+  /// The next sample of the oldest ready batch not wholly evaluated, on the caller's scene;
+  /// false when there is none (or the caller has no scene, or a ready sample failed).
+  bool evaluate_next_ready_sample();
+  /// Waits for the batches in hand on the evaluation thread (freed then), and hands it the
+  /// ready ones.
+  void start_ready_batches();
+  /// Waits for the batches in hand on the evaluation thread; if one failed, every batch
+  /// not recorded is dropped (its samples come after the failure) and the failure thrown.
   void settle_evaluation();
+  /// Every batch empty and free, one of them being filled (after a failure).
+  void drop_batches();
+  int take_free_batch();
   /// After evaluate_on_second_thread(), which sizes the batches.
-  bool evaluates_beside() const { return !batches_[0].states.empty(); }
+  bool evaluates_beside() const { return !batches_.empty(); }
 
   Scene& scene_;
   ResultFile& file_;
@@ -246,6 +275,12 @@ class Recorder {
   stats::StatisticsOptions response_options_;  // time step = output interval, D = 3 h
   std::int64_t window_samples_ = 0;             // samples expected in the evaluation window
   bool records_bodies_ = false;    // output.bodies: the contexts keep the body frames
+  /// The groups' topological order attributes (HDF5 lists a group's members
+  /// alphabetically): (group, comma-separated names), written with the layout.
+  std::vector<std::pair<std::string, std::string>> group_orders_;
+  bool layout_started_ = false;  // lay_out_file() was called (on this thread)
+  /// Set before the evaluation thread's first start, cleared by its job once laid out.
+  bool layout_pending_ = false;
   bool has_extra_channels_ = false;
   long samples_ = 0;
   long samples_evaluated_by_caller_ = 0;
@@ -273,18 +308,29 @@ class Recorder {
   BackgroundWorker block_worker_{[this] {
     add_last_block_statistics(handed_window_first_row_);
   }};
-  // The samples evaluated beside the integration (evaluate_on_second_thread): this thread
-  // fills batches_[filling_] while the evaluation thread records the other one, the
-  // whole recorder's state but the batch being filled being its own until
-  // settle_evaluation(); meanwhile this thread may evaluate into that batch's rows with
-  // caller_, reading of the recorder only what the constructor set (the fills, offsets,
-  // reaction joints, the compensators' element indices). 256 samples a batch: a hand-over per ~1 ms of evaluation, and
-  // the run's end waits for at most one batch. Declared after block_worker_, which its job
+  // The samples evaluated beside the integration (evaluate_on_second_thread). The batches
+  // pass from free (free_) to being filled (filling_) to ready (ready_, full, in sample
+  // order) to in the evaluation thread's hands (handed_, in order) and back to free once
+  // that thread has recorded them. This thread touches a handed batch, and the recorder's
+  // state but the batches it fills or holds ready, only after settle_evaluation(); it may
+  // meanwhile evaluate into a ready batch's rows with caller_, reading of the recorder only
+  // what the constructor set (the fills, offsets, reaction joints, the compensators'
+  // element indices). 256 samples a batch: a hand-over per ~1 ms of evaluation. Eight
+  // batches: while the thread lays the file out (~10-15 ms for the drilling run's 100
+  // series) the caller integrates and evaluates them, and waits for the rest of the layout
+  // only then; sixteen ran no faster and took 3.5 MiB more (docs/performance.md, "Issue #18,
+  // twenty-second round"). A free list taken last in, first out keeps the few batches of a
+  // run's steady state the ones in the caches. Declared after block_worker_, which its job
   // starts: ended first.
   static constexpr long evaluation_batch = 256;
-  std::array<SampleBatch, 2> batches_;
-  int filling_ = 0;
-  BackgroundWorker evaluation_worker_{[this] { record_batch(batches_[1 - filling_], own_); }};
+  static constexpr int evaluation_batches = 8;
+  std::vector<SampleBatch> batches_;
+  std::vector<int> free_, ready_, handed_;  // batch indices; capacity for all: no allocation
+  int filling_ = -1;
+  BackgroundWorker evaluation_worker_{[this] {
+    if (std::exchange(layout_pending_, false)) create_layout();
+    for (const int batch : handed_) record_batch(batches_[batch], own_);
+  }};
 };
 
 }  // namespace heavesim

@@ -60,7 +60,8 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
              output.energy ? " energy" : "");
   const std::string in_line = Recorder::why_samples_in_line(definition, scene);
   fmt::print("  samples evaluated {}\n", in_line.empty() ? "beside the integration, on a second build of the scene "
-                                                           "(a thread of their own, helped by the integrating one)"
+                                                           "(a thread of their own, helped by the integrating one; the result file "
+                                                           "laid out there while the first steps run)"
                                                          : "in line: " + in_line);
   fmt::print("state size {}: evaluated per step: kinematics, {}, {}\n", scene.system->size(),
              integrator.method == IntegrationMethod::contact

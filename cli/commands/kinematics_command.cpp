@@ -157,7 +157,7 @@ int kinematics_command(const RunOptions& options) {
     file.close();
   };
   try {
-    file.flush();  // the layout is on disk: the file appears under its name
+    recorder.lay_out_file();  // the layout is on disk: the file appears under its name
     try {
       outcome = run_kinematics(scene, definition, recorder.needs_reactions(),
                                [&](double t, const VectorX& y, const KinematicPoint& observed) {

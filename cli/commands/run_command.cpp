@@ -93,7 +93,9 @@ int run_command(const RunOptions& options) {
 
   RunOutcome outcome;
   try {
-    file.flush();  // the layout is on disk: the file appears under its name
+    // The file's series, on disk under its name before the first sample is written; with
+    // the samples beside, on the recorder's thread while the first steps are integrated.
+    recorder.lay_out_file();
     try {
       outcome = run_simulation(scene, solver, definition.output.interval, *integrator,
                                [&](double t, const VectorX& y) {

@@ -105,11 +105,13 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
 // The recorder writes a sample's values side by side into the file's staged row, a force
 // element's outputs straight from outputs(). Checked against the elements' own outputs on a
 // second build of the scene, evaluated apart at the same states, and the CSV column for
-// column against the file (%.17g reads back to the same double). 1100 samples: past the
-// staged runs of 64 and the first block of 1024 (its hand-over to the writer and the
+// column against the file (%.17g reads back to the same double). 4400 samples: past the
+// staged runs of 64 and four blocks of 1024 (their hand-overs to the writer and the
 // statistics), recorded in line and, on a build of their own, on the evaluation thread,
 // alone or helped by the caller on a third build (the batches filled while the thread is
-// busy: here every one but the first, as record() only copies states).
+// busy, which lays the file out first: there the caller evaluates whole batches and fills
+// the next; alone, every batch is full before the layout ends and waits, as record() only
+// copies states).
 bool same_recorded_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
 enum class SampleEvaluation { in_line, second_thread, second_thread_and_caller };
@@ -162,7 +164,7 @@ std::map<std::string, double> expect_recorded_element_outputs_and_csv(SampleEval
   Scene scene = build_scene(definition);
   Scene reference = build_scene(definition);
   Scene callers = build_scene(definition);
-  constexpr int samples = 1100;
+  constexpr int samples = 4400;  // more than the recorder's eight batches of 256 hold
   std::vector<double> times;
   std::vector<VectorX> states;
   moving_states(scene, samples, times, states);
