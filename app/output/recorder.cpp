@@ -164,7 +164,7 @@ void Recorder::lay_out_file() {
   }
   // The thread's first job; the batches wait for it (hand_over_batch).
   layout_pending_ = true;
-  evaluation_worker_.start();
+  call_evaluation_worker(&BackgroundWorker::start);
 }
 
 void Recorder::create_layout() {
@@ -476,7 +476,12 @@ void Recorder::hand_over_batch() {
   // when every sample is evaluated in line.
   while (evaluation_worker_.busy()) {
     if (evaluate_next_ready_sample()) continue;
-    if (!free_.empty()) {
+    // A sample that failed is thrown by the thread once it has the batch: at once, rather
+    // than after integrating on into samples that would be dropped.
+    const bool failed = std::any_of(ready_.begin(), ready_.end(), [this](int index) {
+      return static_cast<bool>(batches_[index].failure);
+    });
+    if (!free_.empty() && !failed) {
       filling_ = take_free_batch();
       return;
     }
@@ -509,13 +514,22 @@ void Recorder::start_ready_batches() {
   free_.insert(free_.end(), handed_.begin(), handed_.end());
   handed_.swap(ready_);
   ready_.clear();
-  evaluation_worker_.start();
+  call_evaluation_worker(&BackgroundWorker::start);
   if (!free_.empty()) return;
   // Every batch was ready (the thread was on the layout all along): the caller waits for
   // them to be recorded, having none left to fill.
   settle_evaluation();
   free_.insert(free_.end(), handed_.begin(), handed_.end());
   handed_.clear();
+}
+
+void Recorder::call_evaluation_worker(void (BackgroundWorker::*call)()) {
+  try {
+    (evaluation_worker_.*call)();
+  } catch (...) {
+    drop_batches();
+    throw;
+  }
 }
 
 int Recorder::take_free_batch() {
@@ -555,14 +569,7 @@ void Recorder::evaluate_and_record(SampleContext& sample, double t, const Vector
   commit_row(t, file_.sample_row(), measured_.data());
 }
 
-void Recorder::settle_evaluation() {
-  try {
-    evaluation_worker_.wait();
-  } catch (...) {
-    drop_batches();
-    throw;
-  }
-}
+void Recorder::settle_evaluation() { call_evaluation_worker(&BackgroundWorker::wait); }
 
 void Recorder::record_queued_samples() {
   require_layout();
@@ -589,6 +596,8 @@ void Recorder::record_queued_samples() {
 }
 
 void Recorder::record_evaluation(double t, const VectorX& y) {
+  // The caller's evaluation is recorded here, in order: no thread may hold the file.
+  if (evaluates_beside()) throw std::logic_error("Recorder: record_evaluation with samples evaluated beside");
   require_layout();
   fill_row(own_, t, y, file_.sample_row(), measured_.data());
   commit_row(t, file_.sample_row(), measured_.data());

@@ -42,8 +42,10 @@ class Recorder {
   /// evaluate_on_second_thread() it is the recorder's thread's first job, done while the
   /// caller integrates its first steps (their samples wait in batches meanwhile, evaluated
   /// by the caller when it has a scene: docs/performance.md, "Issue #18, twenty-second
-  /// round"), and a failure to write is thrown as a sample's is, by a later record(); else
-  /// it is done here. The first sample (or finish()) lays the file out if not called.
+  /// round"), and a failure to write is thrown as a sample's is, by a later record() or
+  /// record_queued_samples() (or finish()); else it is done here. Once only, even if it
+  /// fails. If not called, the first record(), record_evaluation(),
+  /// record_queued_samples() or finish() calls it.
   void lay_out_file();
 
   /// Evaluates the scene at (t, y) and records one sample of every channel; after
@@ -61,25 +63,25 @@ class Recorder {
   /// batches and records them, in order, while the caller integrates on
   /// (docs/performance.md, "The samples evaluated beside the integration"). The
   /// recorder's scene must then be its own: a second build of the case that nothing
-  /// else evaluates. With `caller_scene` (the scene the caller integrates, another build
-  /// of the same case), a batch that fills while the second thread is still on the one
-  /// before is not waited on: the caller evaluates its first samples on `caller_scene`
-  /// until the thread is free, which records them and evaluates the rest
-  /// (docs/performance.md, "Issue #18, twenty-first round"); `caller_scene` is then
-  /// evaluated inside record() and record_queued_samples(), between the caller's own uses,
-  /// at earlier times than its own: the loads must be functions of (t, y) alone, as
-  /// why_samples_in_line() requires for the second build. Not with extra channels.
-  /// Up to `evaluation_batches` batches may wait for the thread: while it is busy, the
-  /// caller evaluates the waiting ones and integrates on into a free one.
-  /// A failure of a sample (NumericalError, OutputError) is thrown by a later record() or
-  /// by record_queued_samples(); the samples after it are dropped.
+  /// else evaluates. Up to `evaluation_batches` full batches wait for the thread while it
+  /// is busy (on the file's layout or the batches before); the caller waits only when none
+  /// is free. With `caller_scene` (the scene the caller integrates, another build of the
+  /// same case), the caller meanwhile evaluates the waiting batches' samples on
+  /// `caller_scene`, oldest first, glancing at the thread between samples; the thread
+  /// records those rows and evaluates the rest when it takes the batches
+  /// (docs/performance.md, "Issue #18, twenty-first round" and "twenty-second round");
+  /// `caller_scene` is then evaluated inside record() and record_queued_samples(), between
+  /// the caller's own uses, at earlier times than its own: the loads must be functions of
+  /// (t, y) alone, as why_samples_in_line() requires for the second build. Not with extra
+  /// channels. A failure of a sample (NumericalError, OutputError) is thrown by a later
+  /// record() or by record_queued_samples(); the samples after it are dropped.
   void evaluate_on_second_thread(Scene* caller_scene = nullptr);
   /// Records every sample record() has queued, throwing a failure among them: call at the
   /// end of a run (finish() does, but a failure there is no longer the run's).
   void record_queued_samples();
   /// Records one sample of the system's current evaluation at (t, y), made by the caller
   /// (a kinematic analysis: MultibodySystem::evaluate_prescribed, with reactions when
-  /// needs_reactions()).
+  /// needs_reactions()); in line only (not after evaluate_on_second_thread()).
   void record_evaluation(double t, const VectorX& y);
   /// Whether the channels read joint wrenches (an evaluation must compute reactions).
   bool needs_reactions() const { return needs_reactions_; }
@@ -239,15 +241,20 @@ class Recorder {
   void record_batch(SampleBatch& batch, SampleContext& sample);
   /// The full batch joins the ready ones. While the evaluation thread is busy the caller
   /// evaluates the ready batches' samples (with a scene of its own) and then fills a free
-  /// batch if there is one; otherwise (or once the thread is idle) every ready batch goes
-  /// to the thread, after the ones before are recorded.
+  /// batch if there is one (and no ready sample failed); otherwise (or once the thread is
+  /// idle) every ready batch goes to the thread, after the ones before are recorded.
   void hand_over_batch();
   /// The next sample of the oldest ready batch not wholly evaluated, on the caller's scene;
   /// false when there is none (or the caller has no scene, or a ready sample failed).
   bool evaluate_next_ready_sample();
   /// Waits for the batches in hand on the evaluation thread (freed then), and hands it the
-  /// ready ones.
+  /// ready ones; when that leaves no batch free (all were ready: the thread was on the
+  /// layout), waits for those too.
   void start_ready_batches();
+  /// evaluation_worker_'s start() or wait(), every batch dropped if it throws (a failure
+  /// of the batches in hand, or start()'s job's own when no thread could be made and it
+  /// ran here).
+  void call_evaluation_worker(void (BackgroundWorker::*call)());
   /// Waits for the batches in hand on the evaluation thread; if one failed, every batch
   /// not recorded is dropped (its samples come after the failure) and the failure thrown.
   void settle_evaluation();
@@ -279,7 +286,8 @@ class Recorder {
   /// alphabetically): (group, comma-separated names), written with the layout.
   std::vector<std::pair<std::string, std::string>> group_orders_;
   bool layout_started_ = false;  // lay_out_file() was called (on this thread)
-  /// Set before the evaluation thread's first start, cleared by its job once laid out.
+  /// Set before the evaluation thread's first start; its job clears it before laying the
+  /// file out (a layout that fails is not tried again).
   bool layout_pending_ = false;
   bool has_extra_channels_ = false;
   long samples_ = 0;
@@ -316,7 +324,7 @@ class Recorder {
   // meanwhile evaluate into a ready batch's rows with caller_, reading of the recorder only
   // what the constructor set (the fills, offsets, reaction joints, the compensators'
   // element indices). 256 samples a batch: a hand-over per ~1 ms of evaluation. Eight
-  // batches: while the thread lays the file out (~10-15 ms for the drilling run's 100
+  // batches: while the thread lays the file out (~13-17 ms for the drilling run's 100
   // series) the caller integrates and evaluates them, and waits for the rest of the layout
   // only then; sixteen ran no faster and took 3.5 MiB more (docs/performance.md, "Issue #18,
   // twenty-second round"). A free list taken last in, first out keeps the few batches of a

@@ -111,7 +111,7 @@ TEST(ResultFile, CompleteRunFollowsTheContract) {
 // alone or helped by the caller on a third build (the batches filled while the thread is
 // busy, which lays the file out first: there the caller evaluates whole batches and fills
 // the next; alone, every batch is full before the layout ends and waits, as record() only
-// copies states).
+// copies states: the 4,400 copies take well under a millisecond, the layout several).
 bool same_recorded_number(double a, double b) { return a == b || (std::isnan(a) && std::isnan(b)); }
 
 enum class SampleEvaluation { in_line, second_thread, second_thread_and_caller };

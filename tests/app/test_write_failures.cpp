@@ -103,7 +103,8 @@ TEST(WriteFailures, AFailedHdf5WriteIsReportedAndLeavesWholeSamples) {
 TEST(WriteFailures, AResultFileLargerThanTheFileSizeLimitStopsTheRunAtItsStart) {
   // The result file takes its full length at the start: under `ulimit -f 1024` (1 MiB)
   // the 5.3 MB file fails there (its layout, made on the recorder's thread beside the first
-  // steps, and reported by the first hand-over of samples after it), and no file is left behind.
+  // steps where the machine has two cores, and reported by the first hand-over of samples
+  // after it; in line on one core), and no file is left behind.
   const std::string output = temporary("limited.h5");
   const testing::CommandResult result = testing::run_command_line(with_file_size_limit(
       1024, testing::heavesim_binary() + " run " + testing::source_path(pendulum) + " -o " + output + " " +
