@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include "io/hdf5/hdf5_error.hpp"
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/joint_forces.hpp"
 #include "kernel/algorithms/joint_reactions.hpp"
@@ -168,7 +167,6 @@ void Recorder::lay_out_file() {
 }
 
 void Recorder::create_layout() {
-  hdf5::report_errors_by_return_codes();  // on the evaluation thread too
   for (Channel& channel : channels_) {
     // The recorder's row is the file's staged sample: the file holds its series only, in
     // the channels' order (require_file_block_agrees checks the widths at every sample).
@@ -510,14 +508,15 @@ bool Recorder::evaluate_next_ready_sample() {
 }
 
 void Recorder::start_ready_batches() {
-  settle_evaluation();
-  free_.insert(free_.end(), handed_.begin(), handed_.end());
-  handed_.swap(ready_);
-  ready_.clear();
+  free_handed_batches();
+  handed_.swap(ready_);  // ready_ takes the emptied list
   call_evaluation_worker(&BackgroundWorker::start);
-  if (!free_.empty()) return;
   // Every batch was ready (the thread was on the layout all along): the caller waits for
   // them to be recorded, having none left to fill.
+  if (free_.empty()) free_handed_batches();
+}
+
+void Recorder::free_handed_batches() {
   settle_evaluation();
   free_.insert(free_.end(), handed_.begin(), handed_.end());
   handed_.clear();
@@ -577,9 +576,7 @@ void Recorder::record_queued_samples() {
   if (batches_[filling_].count > 0) ready_.push_back(std::exchange(filling_, -1));
   while (evaluation_worker_.busy() && evaluate_next_ready_sample()) {
   }
-  settle_evaluation();
-  free_.insert(free_.end(), handed_.begin(), handed_.end());
-  handed_.clear();
+  free_handed_batches();
   // In line, the thread being idle: the ready batches' rows the caller evaluated are
   // recorded, the rest evaluated on the recorder's scene.
   for (const int index : ready_) {

@@ -251,6 +251,8 @@ class Recorder {
   /// ready ones; when that leaves no batch free (all were ready: the thread was on the
   /// layout), waits for those too.
   void start_ready_batches();
+  /// settle_evaluation(), then the batches the thread had are free again.
+  void free_handed_batches();
   /// evaluation_worker_'s start() or wait(), every batch dropped if it throws (a failure
   /// of the batches in hand, or start()'s job's own when no thread could be made and it
   /// ran here).

@@ -14,7 +14,6 @@
 #include <system_error>
 #include <utility>
 
-#include "io/hdf5/hdf5_error.hpp"
 #include "signal/fixed_width.hpp"
 
 namespace heavesim {
@@ -466,9 +465,6 @@ void ResultFile::end_sample() {
   // The block goes to the block writer, which writes it while the next one is filled;
   // the one before must be on disk first (and a failure of it is thrown here).
   ready_to_write();
-  // The recorder may end its samples on a thread of its own (Recorder::evaluate_on_second_thread):
-  // an HDF5 call, so after the block writer's last one (ready_to_write).
-  hdf5::report_errors_by_return_codes();
   extend_series(rows_on_disk_ + block_rows);  // structural changes stay on this thread
   std::swap(building_block_, last_block_);
   handed_first_row_ = rows_on_disk_;

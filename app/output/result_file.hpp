@@ -54,6 +54,7 @@
 
 #include "app/output/background_worker.hpp"
 #include "app/output/output_error.hpp"
+#include "io/hdf5/hdf5_error.hpp"
 #include "io/hdf5/hdf5_handle.hpp"
 
 namespace heavesim {
@@ -231,8 +232,12 @@ class ResultFile {
   /// two threads at once (and the serial build of HDF5 could serve as well).
   void settle() { block_writer_.wait(); }
   /// What every public write does first: settle(), then check_usable().
+  /// HDF5's error reporting is set for the calling thread each time (an HDF5 call, so after
+  /// settle()): the recorder lays the file out and ends its samples on a thread of its own
+  /// (Recorder::evaluate_on_second_thread), and a thread-safe HDF5 keeps the setting per thread.
   void ready_to_write() {
     settle();
+    hdf5::report_errors_by_return_codes();
     check_usable();
   }
   /// The first `rows` buffered samples of every series to disk; a sample still being
