@@ -67,6 +67,20 @@ Handle result_file_access() {
   return access;
 }
 
+// The chunk index's B-tree nodes sized to the series' reserved chunks: HDF5's default
+// K = 32 makes every series' node hold 64 chunk addresses (a 2.6 kB node on disk and
+// ~17.7 kB in memory each, 1.8 MB for the drilling run's 100 series, which has 12 chunks
+// a series); the smallest K whose node holds them all keeps one node a series (a B-tree of
+// more levels, as HDF5 grows it, past the reservation). K != 32 makes HDF5 write a
+// version 1 superblock, which stores K (HDF5 1.6 and later read it).
+// docs/performance.md, "Issue #18, twenty-third round".
+Handle result_file_creation(hsize_t reserved_chunks) {
+  Handle creation(H5Pcreate(H5P_FILE_CREATE));
+  const auto k = static_cast<unsigned>(std::clamp<hsize_t>((reserved_chunks + 1) / 2, 1, 32));
+  if (creation.valid() && H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
+  return creation;
+}
+
 // Whether an attribute's stored type is `type`, so that it can be overwritten in place.
 // The records (compounds of doubles, ~40 fields for a channel's statistics) are compared
 // member by member in order: H5Tequal sorts both compounds' members by name first
@@ -154,7 +168,9 @@ ResultFile::ResultFile(const std::string& path, hsize_t reserved_samples)
     if (previous_result_ >= 0) previous_result_release_.start();
   }
   const Handle access = result_file_access();
-  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()));
+  const Handle creation = result_file_creation((reserved_samples + block_rows - 1) / block_rows);
+  file_ = Handle(H5Fcreate(partial_path_.c_str(), H5F_ACC_TRUNC, creation.valid() ? creation.get() : H5P_DEFAULT,
+                           access.get()));
   if (!file_.valid()) throw OutputError(path_, "cannot create result file", hdf5::last_error());
   text_type_ = hdf5::variable_text_type();
   links_ = hdf5::intermediate_group_links();
@@ -215,6 +231,7 @@ void ResultFile::abandon() {
     for (Series::KeptAttribute& kept : series.kept_attributes) kept.attribute.abandon();
     series.dataset.abandon();
   }
+  for (auto& [fields, type] : record_types_) type.abandon();
   file_.abandon();
   if (raw_data_ >= 0) ::close(std::exchange(raw_data_, -1));
 }
@@ -287,6 +304,14 @@ hid_t ResultFile::record_type(const std::vector<std::string>& fields) {
     for (const std::size_t f : by_name)
       check(H5Tinsert(type.get(), fields[f].c_str(), f * sizeof(double), H5T_NATIVE_DOUBLE) >= 0,
             "cannot write result file");
+    // Stored once in the file (a datatype object no group links to): every attribute of
+    // these fields refers to it instead of holding the members' names and types in its
+    // series' header (~2.5 kB for the ~40 statistics), which every flush of a header
+    // rewrites. Readers see the same compound (docs/performance.md, "Issue #18,
+    // twenty-third round"). Before the layout is published only: a datatype object made
+    // later would change the file's structure under a reader.
+    if (!published_)
+      check(H5Tcommit_anon(file_.get(), type.get(), H5P_DEFAULT, H5P_DEFAULT) >= 0, "cannot write result file");
     record_types_.emplace_back(fields, std::move(type));
     known = record_types_.end() - 1;
   }
@@ -398,7 +423,8 @@ int ResultFile::add_series(const std::string& dataset_path, int columns, const s
   // and never filled: see the header (no structural change after the layout).
   const bool configured = H5Pset_chunk(create.get(), rank, chunk) >= 0 &&
                           H5Pset_alloc_time(create.get(), H5D_ALLOC_TIME_EARLY) >= 0 &&
-                          H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0;
+                          H5Pset_fill_time(create.get(), H5D_FILL_TIME_NEVER) >= 0 &&
+                          H5Pset_obj_track_times(create.get(), false) >= 0;
   check(configured, "cannot create result file");
   Handle dataset(H5Dcreate2(file_.get(), dataset_path.c_str(), H5T_NATIVE_DOUBLE, space.get(), links_.get(),
                             create.get(), dataset_access_.get()));
@@ -668,6 +694,9 @@ void ResultFile::close() {
         check(kept.attribute.close(), "cannot close result file");
       check(series.dataset.close(), "cannot close result file");
     }
+    // The record types stored in the file are objects of it too: with one open, HDF5 would
+    // end the file (its last writes) only when that handle goes, after close() returned.
+    for (auto& [fields, type] : record_types_) check(type.close(), "cannot close result file");
     check(file_.close(), "cannot close result file");
     if (raw_data_ >= 0 && ::close(std::exchange(raw_data_, -1)) != 0) fail_with_errno("cannot close result file");
   } catch (...) {

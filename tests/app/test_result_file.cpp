@@ -442,7 +442,9 @@ TEST(ResultFile, EverySampleLandsInItsRowThroughRunsBlocksAndFlushes) {
   // and blocks' boundaries, one between the appends of a sample (whose first row must
   // survive it), and a read of the block being built (block(), which moves a run short
   // of 64) before the next block ends. Value (k, series s, column c) = 1000 k + 10 s + c,
-  // read back from the block and from the file.
+  // read back from the block and from the file. 1024 samples reserved: the chunk index's
+  // nodes hold two chunks (K = 1, app/output/result_file.cpp), so the four blocks make
+  // HDF5 split them.
   const std::string output = temporary("rows.h5");
   const int widths[3] = {0, 3, 7};
   const long samples = 4000;
@@ -584,6 +586,57 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
 // that then fails in its set-up): a regular file by its name, its pages freed by a helper
 // thread (result_file.cpp); a FIFO removed, never opened (an open for reading would wait for
 // a writer); a link removed, not its target.
+// What the layout stores once or not at all (docs/performance.md, "Issue #18,
+// twenty-third round"): the chunk index's nodes sized to the reservation (5,000 samples:
+// five chunks a series, held by one node of K = 3), the record type a datatype object that
+// every series' record refers to, and no modification time in the series' headers (two
+// runs of a case give files that differ in their timings only).
+TEST(ResultFile, TheLayoutSizesTheChunkIndexAndStoresTheRecordTypeOnce) {
+  const std::string output = temporary("layout.h5");
+  const double nan = std::nan("");
+  {
+    ResultFile file(output, 5000);
+    const int scalar = file.add_series("/scalar", 0, "-", "one column");
+    const int triple = file.add_series("/triple", 3, "-", "three columns");
+    file.set_record_attribute(scalar, "statistics", {"mean", "std"}, {nan, nan});
+    file.set_record_attribute(triple, "statistics", {"mean", "std"}, std::vector<double>(6, nan));
+    file.flush();
+    file.set_record_attribute(triple, "statistics", {"mean", "std"}, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0});
+    file.close();
+  }
+  const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t creation = H5Fget_create_plist(file);
+  unsigned k = 0;
+  EXPECT_GE(H5Pget_istore_k(creation, &k), 0);
+  EXPECT_EQ(k, 3u);
+  H5Pclose(creation);
+  haddr_t record_type_address[2] = {HADDR_UNDEF, HADDR_UNDEF};
+  const char* series[2] = {"/scalar", "/triple"};
+  for (int s = 0; s < 2; ++s) {
+    H5O_info_t dataset{};
+    EXPECT_GE(H5Oget_info_by_name2(file, series[s], &dataset, H5O_INFO_BASIC | H5O_INFO_TIME, H5P_DEFAULT), 0);
+    EXPECT_EQ(dataset.mtime, 0) << series[s];
+    EXPECT_EQ(dataset.ctime, 0) << series[s];
+    const hid_t attribute = H5Aopen_by_name(file, series[s], "statistics", H5P_DEFAULT, H5P_DEFAULT);
+    const hid_t type = H5Aget_type(attribute);
+    EXPECT_GT(H5Tcommitted(type), 0) << series[s];
+    H5O_info_t shared{};
+    EXPECT_GE(H5Oget_info2(type, &shared, H5O_INFO_BASIC), 0);
+    record_type_address[s] = shared.addr;
+    if (s == 1) {
+      std::vector<double> values(6);
+      EXPECT_GE(H5Aread(attribute, type, values.data()), 0);
+      EXPECT_EQ(values, (std::vector<double>{1.0, 2.0, 3.0, 4.0, 5.0, 6.0}));
+    }
+    H5Tclose(type), H5Aclose(attribute);
+  }
+  EXPECT_NE(record_type_address[0], HADDR_UNDEF);
+  EXPECT_EQ(record_type_address[0], record_type_address[1]);
+  H5Fclose(file);
+  std::filesystem::remove(output);
+}
+
 TEST(ResultFile, AnEarlierFileAtThePathIsRemovedAtOnce) {
   const std::string output = temporary("replaced.h5"), target = temporary("replaced_link_target.txt");
   const auto gone = [&] { return !std::filesystem::exists(std::filesystem::symlink_status(output)); };
