@@ -63,9 +63,10 @@ void MomentAccumulator::add(const double* x, std::ptrdiff_t stride, std::int64_t
 /// 3 or 6 columns wide; the drilling run's whole-record moments took 28 instructions a
 /// value, docs/performance.md, "Issue #18, eleventh round"). Each column still adds its rows
 /// in order, so the sums are the same, bit for bit, whichever path adds them.
-template <int Width>
+template <int Width, MomentAccumulator::Orders Up_to>
 void MomentAccumulator::add_tile(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows,
                                  std::int64_t count, std::ptrdiff_t first, std::ptrdiff_t runtime_n) {
+  constexpr bool fourth = Up_to == Orders::up_to_fourth;
   constexpr std::ptrdiff_t tile = 8;
   const std::ptrdiff_t n = Width > 0 ? Width : runtime_n;
   double sum[tile] = {}, minimum[tile], maximum[tile], mean[tile], m2[tile] = {}, m3[tile] = {}, m4[tile] = {};
@@ -86,23 +87,31 @@ void MomentAccumulator::add_tile(MomentAccumulator* columns, std::ptrdiff_t widt
     for (std::ptrdiff_t c = 0; c < n; ++c) {
       const double deviation = row[c] - mean[c], square = deviation * deviation;
       m2[c] += square;
-      m3[c] += square * deviation;
-      m4[c] += square * square;
+      if constexpr (fourth) {
+        m3[c] += square * deviation;
+        m4[c] += square * square;
+      }
     }
   }
-  for (std::ptrdiff_t c = 0; c < n; ++c)
+  for (std::ptrdiff_t c = 0; c < n; ++c) {
     columns[first + c].merge(count, minimum[c], maximum[c], mean[c], m2[c], m3[c], m4[c]);
+    if constexpr (!fourth) columns[first + c].higher_orders_ = false;
+  }
 }
 
 void MomentAccumulator::add_rows(MomentAccumulator* columns, std::ptrdiff_t width, const double* rows,
-                                 std::int64_t count) {
+                                 std::int64_t count, Orders orders) {
   if (count <= 0) return;
   // Columns a tile of at most 8 at a time, so that the tile's sums stay in registers.
   constexpr std::ptrdiff_t tile = 8;
   for (std::ptrdiff_t first = 0; first < width; first += tile) {
     const std::ptrdiff_t n = std::min(tile, width - first);
     call_with_fixed_width<1, 2, 3, 4, 6, 8>(n, [&](auto fixed) {
-      add_tile<decltype(fixed)::value>(columns, width, rows, count, first, n);
+      constexpr int fixed_width = decltype(fixed)::value;
+      if (orders == Orders::up_to_second)
+        add_tile<fixed_width, Orders::up_to_second>(columns, width, rows, count, first, n);
+      else
+        add_tile<fixed_width, Orders::up_to_fourth>(columns, width, rows, count, first, n);
     });
   }
 }
@@ -137,13 +146,13 @@ double MomentAccumulator::standard_deviation() const {
 }
 
 double MomentAccumulator::skewness() const {
-  if (count_ < 2 || !(m2_ > 0.0)) return nan();
+  if (count_ < 2 || !(m2_ > 0.0) || !higher_orders_) return nan();
   const double n = static_cast<double>(count_);
   return std::sqrt(n) * m3_ / std::pow(m2_, 1.5);
 }
 
 double MomentAccumulator::kurtosis() const {
-  if (count_ < 2 || !(m2_ > 0.0)) return nan();
+  if (count_ < 2 || !(m2_ > 0.0) || !higher_orders_) return nan();
   return static_cast<double>(count_) * m4_ / (m2_ * m2_);
 }
 

@@ -21,9 +21,11 @@ class RunningStatistics {
   void add(const double* row) {
     for (std::size_t c = 0; c < columns_.size(); ++c) columns_[c].add(row[c]);
   }
-  /// `samples` samples stored row after row (one value per column a row).
+  /// `samples` samples stored row after row (one value per column a row). Their central
+  /// sums up to the second power only: these statistics report no higher moment.
   void add_rows(const double* rows, long samples) {
-    stats::MomentAccumulator::add_rows(columns_.data(), static_cast<std::ptrdiff_t>(columns_.size()), rows, samples);
+    stats::MomentAccumulator::add_rows(columns_.data(), static_cast<std::ptrdiff_t>(columns_.size()), rows, samples,
+                                       stats::MomentAccumulator::Orders::up_to_second);
   }
   /// Column `column` takes the samples `other` accumulated as well.
   void merge(int column, const stats::MomentAccumulator& other) { columns_.at(column).merge(other); }

@@ -210,6 +210,49 @@ TEST(ResponseStatistics, EveryTileWidthGivesTheOneColumnMomentsBitForBit) {
   }
 }
 
+// Blocks added up to the second order (the recorder's whole-record statistics before the
+// evaluation window) give every column the extremes, mean and standard deviation of the
+// full path, bit for bit, the deviation also within round-off of the test's own two-pass
+// sum, and no skewness or kurtosis, even once a full accumulator is merged in.
+TEST(ResponseStatistics, SecondOrderBlocksKeepTheMeanAndDeviationAndReportNoHigherMoment) {
+  const int n = 900;
+  for (int width : {1, 3, 5, 6, 11}) {
+    std::vector<double> rows(n * width);
+    for (int i = 0; i < n; ++i)
+      for (int c = 0; c < width; ++c) rows[i * width + c] = 10.0 * c + std::sin(0.21 * i + c) + 0.5 * std::cos(0.9 * i);
+    std::vector<MomentAccumulator> full(width), second(width);
+    for (int first = 0; first < n; first += 256) {
+      const int count = std::min(256, n - first);
+      MomentAccumulator::add_rows(full.data(), width, rows.data() + first * width, count);
+      MomentAccumulator::add_rows(second.data(), width, rows.data() + first * width, count,
+                                  MomentAccumulator::Orders::up_to_second);
+    }
+    for (int c = 0; c < width; ++c) {
+      double sum = 0.0, squares = 0.0;
+      for (int i = 0; i < n; ++i) sum += rows[i * width + c];
+      const double mean = sum / n;
+      for (int i = 0; i < n; ++i) squares += (rows[i * width + c] - mean) * (rows[i * width + c] - mean);
+      const MomentAccumulator& m = second[c];
+      EXPECT_EQ(m.count(), n);
+      EXPECT_EQ(m.mean(), full[c].mean()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.standard_deviation(), full[c].standard_deviation()) << "width " << width << ", column " << c;
+      EXPECT_EQ(m.minimum(), full[c].minimum());
+      EXPECT_EQ(m.maximum(), full[c].maximum());
+      EXPECT_NEAR(m.standard_deviation(), std::sqrt(squares / (n - 1)), 1e-13) << "width " << width;
+      EXPECT_TRUE(std::isfinite(full[c].skewness()) && std::isfinite(full[c].kurtosis()));
+      EXPECT_TRUE(std::isnan(m.skewness()) && std::isnan(m.kurtosis())) << "width " << width;
+      MomentAccumulator merged = m;
+      merged.merge(full[c]);
+      EXPECT_TRUE(std::isnan(merged.skewness()) && std::isnan(merged.kurtosis()));
+      MomentAccumulator into_full = full[c];
+      into_full.merge(m);
+      EXPECT_TRUE(std::isnan(into_full.kurtosis()));
+      // The same samples twice: the same mean, M2 doubled over 2n - 1.
+      EXPECT_NEAR(into_full.standard_deviation(), std::sqrt(2.0 * squares / (2 * n - 1)), 1e-13);
+    }
+  }
+}
+
 // A column of an interleaved block (the recorder's rows) gives the statistics of the same
 // samples stored contiguously: the strided add copies the column, then takes the
 // contiguous path. Crossings, crests and the spectrum see the same values in the same
