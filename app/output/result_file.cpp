@@ -72,9 +72,11 @@ Handle result_file_access() {
 // ~17.7 kB in memory each, 1.8 MB for the drilling run's 100 series, which has 12 chunks
 // a series); the smallest K whose node holds them all keeps one node a series (a B-tree of
 // more levels, as HDF5 grows it, past the reservation). K != 32 makes HDF5 write a
-// version 1 superblock, which stores K (HDF5 1.6 and later read it).
+// version 1 superblock, which stores K (HDF5 1.6 and later read it). Without a
+// reservation (a file grown as it is written) HDF5's default stays.
 // docs/performance.md, "Issue #18, twenty-third round".
 Handle result_file_creation(hsize_t reserved_chunks) {
+  if (reserved_chunks == 0) return Handle(H5Pcreate(H5P_FILE_CREATE));
   Handle creation(H5Pcreate(H5P_FILE_CREATE));
   const auto k = static_cast<unsigned>(std::clamp<hsize_t>((reserved_chunks + 1) / 2, 1, 32));
   if (creation.valid() && H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
@@ -309,7 +311,9 @@ hid_t ResultFile::record_type(const std::vector<std::string>& fields) {
     // series' header (~2.5 kB for the ~40 statistics), which every flush of a header
     // rewrites. Readers see the same compound (docs/performance.md, "Issue #18,
     // twenty-third round"). Before the layout is published only: a datatype object made
-    // later would change the file's structure under a reader.
+    // later would change the file's structure under a reader. (An attribute of these fields
+    // deleted and made again after that changes the type's reference count: a header write,
+    // as the attribute's own is.)
     if (!published_)
       check(H5Tcommit_anon(file_.get(), type.get(), H5P_DEFAULT, H5P_DEFAULT) >= 0, "cannot write result file");
     record_types_.emplace_back(fields, std::move(type));

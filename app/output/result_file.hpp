@@ -280,6 +280,8 @@ class ResultFile {
   std::vector<Series> series_;
   /// The compound types of set_record_attribute, one per list of field names, built once
   /// (a run writes the same two lists on every series, at its creation and at the end).
+  /// Those made before the layout is published are stored in the file (record_type()):
+  /// objects of it, closed before the file in close().
   std::vector<std::pair<std::vector<std::string>, hdf5::Handle>> record_types_;
   /// The text type, link creation and dataset access properties every series and text
   /// attribute uses, made once (a run creates ~100 series with two texts each).

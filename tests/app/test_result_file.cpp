@@ -582,10 +582,6 @@ TEST(ResultFile, RecordAttributeKeepsItsFieldsWhenOverwritten) {
   std::filesystem::remove(output);
 }
 
-// An earlier file at the path goes at once (a stale complete = 1 must not stand for a run
-// that then fails in its set-up): a regular file by its name, its pages freed by a helper
-// thread (result_file.cpp); a FIFO removed, never opened (an open for reading would wait for
-// a writer); a link removed, not its target.
 // What the layout stores once or not at all (docs/performance.md, "Issue #18,
 // twenty-third round"): the chunk index's nodes sized to the reservation (5,000 samples:
 // five chunks a series, held by one node of K = 3), the record type a datatype object that
@@ -603,6 +599,14 @@ TEST(ResultFile, TheLayoutSizesTheChunkIndexAndStoresTheRecordTypeOnce) {
     file.flush();
     file.set_record_attribute(triple, "statistics", {"mean", "std"}, {1.0, 2.0, 3.0, 4.0, 5.0, 6.0});
     file.close();
+    // Ended by close(), while the ResultFile lives on: were a stored type still open, HDF5
+    // would keep the file open for writing (and end it only once the type closes), and an
+    // open of the path would share that file, writable.
+    const hid_t reopened = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    unsigned intent = 0;
+    EXPECT_GE(H5Fget_intent(reopened, &intent), 0);
+    EXPECT_EQ(intent, H5F_ACC_RDONLY);
+    H5Fclose(reopened);
   }
   const hid_t file = H5Fopen(output.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   ASSERT_GE(file, 0);
@@ -637,6 +641,10 @@ TEST(ResultFile, TheLayoutSizesTheChunkIndexAndStoresTheRecordTypeOnce) {
   std::filesystem::remove(output);
 }
 
+// An earlier file at the path goes at once (a stale complete = 1 must not stand for a run
+// that then fails in its set-up): a regular file by its name, its pages freed by a helper
+// thread (result_file.cpp); a FIFO removed, never opened (an open for reading would wait for
+// a writer); a link removed, not its target.
 TEST(ResultFile, AnEarlierFileAtThePathIsRemovedAtOnce) {
   const std::string output = temporary("replaced.h5"), target = temporary("replaced_link_target.txt");
   const auto gone = [&] { return !std::filesystem::exists(std::filesystem::symlink_status(output)); };
