@@ -76,10 +76,9 @@ Handle result_file_access() {
 // reservation (a file grown as it is written) HDF5's default stays.
 // docs/performance.md, "Issue #18, twenty-third round".
 Handle result_file_creation(hsize_t reserved_chunks) {
-  if (reserved_chunks == 0) return Handle(H5Pcreate(H5P_FILE_CREATE));
   Handle creation(H5Pcreate(H5P_FILE_CREATE));
   const auto k = static_cast<unsigned>(std::clamp<hsize_t>((reserved_chunks + 1) / 2, 1, 32));
-  if (creation.valid() && H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
+  if (reserved_chunks > 0 && creation.valid() && H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
   return creation;
 }
 
