@@ -195,6 +195,9 @@ class Recorder {
   /// The evaluation window's statistics of every column of `channel`, column after column,
   /// the fields of statistic_names() (touches that channel only).
   static std::vector<double> response_statistic_values(Channel& channel);
+  /// The channel's statistics attributes in the file: the whole record's minimum, maximum,
+  /// mean and standard deviation, and the window's `response_values` (finish()).
+  void write_statistics(const Channel& channel, const std::vector<double>& response_values);
   /// Whether the channel gets the cycle, extreme-value and spectral statistics (scalar
   /// series but /time, and reactions) or the moments only.
   static bool has_extreme_statistics(const Channel& channel);

@@ -60,7 +60,9 @@ void update_velocities(const Model& model, Data& data, const VectorX& q, const V
         },
         joint.type);
     data.bias_acceleration_world[i] = bias;
-    data.bias_force_world[i] = data.velocity_world[i].cross(link_momentum(model, data, i, data.velocity_world[i]));
+    // Kept: the kinetic energy is 1/2 v_i . h_i (kernel/algorithms/energy.cpp).
+    data.momentum_world[i] = link_momentum(model, data, i, data.velocity_world[i]);
+    data.bias_force_world[i] = data.velocity_world[i].cross(data.momentum_world[i]);
   }
   data.stages.velocities_computed();
 }

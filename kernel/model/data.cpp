@@ -27,6 +27,7 @@ Data::Data(const Model& model)
   added_inertia_world.assign(n, Matrix6::Zero());
   velocity_world.assign(n, Motion::Zero());
   bias_acceleration_world.assign(n, Motion::Zero());
+  momentum_world.assign(n, Force::Zero());
   bias_force_world.assign(n, Force::Zero());
   qdd = VectorX::Zero(model.nv);
   acceleration_world.assign(n, Motion::Zero());

@@ -90,7 +90,8 @@ struct Data {
   VectorX v;  // nv: the joint velocities of this stage (mjData's qvel), for constraint_bias
   AlignedVector<Motion> velocity_world;           // spatial velocity v_i of each link
   AlignedVector<Motion> bias_acceleration_world;  // c_i = dS_i/dt v_i (velocity-product term)
-  AlignedVector<Force> bias_force_world;          // v_i x* (I_i v_i)
+  AlignedVector<Force> momentum_world;            // h_i = I_i v_i, rigid plus added inertia [N s, N m s]
+  AlignedVector<Force> bias_force_world;          // v_i x* h_i
 
   // --- acceleration stage ---
   VectorX qdd;                                    // nv, joint accelerations

@@ -92,6 +92,14 @@ class HelgrindSeesNoRace(unittest.TestCase):
         self.assert_clean(code, report)
         self.assertIn("[  PASSED  ] 4 tests", output)
 
+    def test_the_loop_over_items_on_two_threads(self):
+        # kernel/math/two_thread_loop.hpp (tests/kernel/test_two_thread_loop.cpp): items on
+        # two threads, each item's then() on the caller's thread in order, reading what the
+        # other thread's work wrote; failures handed over from either thread.
+        code, output, report = helgrind([TESTS_BINARY, "--gtest_filter=TwoThreadLoop.*"])
+        self.assert_clean(code, report)
+        self.assertIn("[  PASSED  ] 6 tests", output)
+
     def test_the_shared_transform_plans(self):
         # signal/hann_segment.cpp: FFTW plans made on first use by whichever thread comes
         # first and used by all, transforms made and dropped on four threads at once

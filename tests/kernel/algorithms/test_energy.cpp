@@ -1,10 +1,11 @@
 // Kinetic and potential energy against the compound pendulum's textbook formulas, the
 // quadratic form 1/2 v^T M v on random trees, and the sum of -m g . c over a planar
-// chain's links written by hand.
+// chain's links written by hand; the kinetic energy refused without a current velocity stage.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
+#include <stdexcept>
 
 #include "kernel/algorithms/energy.hpp"
 #include "kernel/algorithms/kinematics.hpp"
@@ -42,6 +43,19 @@ TEST(Energy, KineticEnergyIsHalfTheMassMatrixQuadraticForm) {
     // Two sums of O(n^2) positive-definite terms of order 10 J: bound 1e-12 relative.
     EXPECT_NEAR(kinetic, quadratic_form, 1e-12 * quadratic_form) << "trial " << trial;
   }
+}
+
+TEST(Energy, KineticEnergyReadsTheCurrentVelocityStageOnly) {
+  // It reads the momenta the velocity stage keeps: after a new position stage they belong
+  // to the configuration before, and the read is refused rather than mixed.
+  const Model model = samples::pendulum(2.0, 0.6, 0.24);
+  Data data(model);
+  update_positions(model, data, VectorX::Constant(1, 0.7));
+  EXPECT_THROW(kinetic_energy(model, data), std::logic_error);
+  update_velocities(model, data, VectorX::Constant(1, 0.7), VectorX::Constant(1, -1.3));
+  EXPECT_NEAR(kinetic_energy(model, data), 0.5 * (0.24 + 2.0 * 0.36) * 1.69, 1e-14);
+  update_positions(model, data, VectorX::Constant(1, 0.2));
+  EXPECT_THROW(kinetic_energy(model, data), std::logic_error);
 }
 
 TEST(Energy, PotentialEnergyOfAPlanarChainSumsTheLinkHeights) {
