@@ -77,8 +77,9 @@ Handle result_file_access() {
 // docs/performance.md, "Issue #18, twenty-third round".
 Handle result_file_creation(hsize_t reserved_chunks) {
   Handle creation(H5Pcreate(H5P_FILE_CREATE));
-  const auto k = static_cast<unsigned>(std::clamp<hsize_t>((reserved_chunks + 1) / 2, 1, 32));
-  if (reserved_chunks > 0 && creation.valid() && H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
+  if (reserved_chunks == 0 || !creation.valid()) return creation;
+  const auto k = static_cast<unsigned>(std::min<hsize_t>((reserved_chunks + 1) / 2, 32));
+  if (H5Pset_istore_k(creation.get(), k) < 0) creation.reset();
   return creation;
 }
 

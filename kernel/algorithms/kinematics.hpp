@@ -13,7 +13,7 @@ void update_positions(const Model& model, Data& data, const VectorX& q);
 
 /// Velocity stage for joint velocities v (nv) at configuration q; requires update_positions(q).
 /// Fills v_i = v_parent + S_i v_i, c_i = v_i x (S_i v_i) + X_world_link c_J,
-/// and the gyroscopic bias forces v_i x* I_i v_i.
+/// the momenta h_i = I_i v_i and the gyroscopic bias forces v_i x* h_i.
 void update_velocities(const Model& model, Data& data, const VectorX& q, const VectorX& v);
 
 /// Momentum I_i v [N s, N m s] of link i moving with v: rigid plus any added inertia,

@@ -62,20 +62,15 @@ void for_each_index_in_order(std::size_t count, int threads, Work&& work, Then&&
     try {
       helper = std::thread([&] {
         for (std::size_t i = next.fetch_add(1); i < count; i = next.fetch_add(1)) {
-          std::exception_ptr failure;
           try {
             work(i);
           } catch (...) {
-            failure = std::current_exception();
+            helper_failure = std::current_exception();  // read by the caller after the join
           }
           const std::lock_guard lock(mutex);
           done[i] = 1;
-          if (failure) {
-            helper_failure = failure;
-            stop();
-          }
+          if (helper_failure) stop();
           changed.notify_all();
-          if (failure) return;
         }
       });
     } catch (const std::system_error&) {
@@ -96,12 +91,13 @@ void for_each_index_in_order(std::size_t count, int threads, Work&& work, Then&&
       if (stopped || next_then == count) break;
       lock.unlock();
       const std::size_t i = next.fetch_add(1);
-      if (i < count) work(i);
-      lock.lock();
       if (i < count) {
+        work(i);
+        lock.lock();
         done[i] = 1;
         continue;
       }
+      lock.lock();
       // Nothing left to take: the next then() waits for the item the other thread holds.
       changed.wait(lock, [&] { return stopped || done[next_then] != 0; });
     }
