@@ -165,7 +165,7 @@ void MultibodySystem::compute_joint_reactions(double t) {
   // holds every joint's wrench already (f = I^A a + p^A): no second pass. A recorded sample
   // of the drilling run spent ~10 % of its evaluation in that pass (docs/performance.md,
   // "Issue #18, nineteenth round").
-  if (!model_->has_constraints() && articulated_body_joint_wrenches(*model_, data_)) return;
+  if (reactions_from_articulated_pass() && articulated_body_joint_wrenches(*model_, data_)) return;
   total_loads_ = forces_.external_force_world;
   if (model_->has_constraints()) {
     tau_total_ = forces_.joint_force;
