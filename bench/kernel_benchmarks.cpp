@@ -2,6 +2,7 @@
 // pre-drawn random states cycled, no allocation). Run: build/bench/heavesim_bench.
 #include <benchmark/benchmark.h>
 
+#include <cstdlib>  // defines __GLIBC__ where it applies, before the test below
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -112,21 +113,23 @@ void BM_ABAWithReactions(benchmark::State& state) {
   });
 }
 
+#if defined(__GLIBC__)
+// The whole binary on the two heap thresholds `heavesim` sets (cli/process_memory.cpp),
+// whatever the filter or the order of the benchmarks: blocks below 32 MiB from the heap,
+// not mappings of their own, and a free does not give the heap's top back below 128 MiB.
+// With glibc's defaults (128 KiB each), BM_SetUp from 128 links on gave its pages back
+// every iteration and faulted them in again: 0.67 ms at 128 links instead of 0.08, a step
+// from 64 links that was page faults, not work (docs/performance.md, "Issue #18,
+// twenty-fifth round").
+[[maybe_unused]] const bool heap_thresholds_set =
+    mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 128 << 20) == 1;
+#endif
+
 /// Set-up of an n-link chain as a case builds it: the model through ModelBuilder
 /// (samples::hanging_chain: names, joints, inertias, topology) and its Data (every
 /// workspace sized once). Issue #18 asks for O(n) and at most 10 ms at 128 links;
 /// Google Benchmark fits the exponent over n = 16 .. 1024.
 void BM_SetUp(benchmark::State& state) {
-#if defined(__GLIBC__)
-  // On the heap as `heavesim` sets it up (cli/process_memory.cpp): blocks below 32 MiB from
-  // the heap, not mappings of their own, and a free does not give the heap's top back
-  // below 128 MiB. With glibc's defaults (128 KiB each), every iteration from 128 links on
-  // gave pages back and the next faulted them in again: 0.67 ms at 128 links instead of
-  // 0.08, a step from 64 links that was page faults, not work (docs/performance.md,
-  // "Issue #18, twenty-fifth round").
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 128 << 20);
-#endif
   const std::vector<double> masses(static_cast<std::size_t>(state.range(0)), 10.0);
   for (auto _ : state) {
     const Model model = samples::hanging_chain(masses);

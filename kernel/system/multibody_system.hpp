@@ -55,10 +55,12 @@ class MultibodySystem {
   /// Evaluates the full pipeline at (t, y) for outputs: stages, forces, qdd, constraint
   /// multipliers and, when asked, the joint wrenches (loop forces included).
   void evaluate(double t, const VectorX& y, bool compute_reactions);
-  /// Whether evaluate() reads the joint reactions from the articulated-body pass that gave
-  /// its accelerations (f = I^A a + p^A, Featherstone 2008, sec. 7.1: no second pass): a
-  /// tree without constraint rows whose forward dynamics is ABA. Otherwise (loops, drivers'
-  /// rows, CRBA) they take an inverse-dynamics pass with the constraint loads.
+  /// Whether evaluate() (a run's recorded sample) reads the joint reactions from the
+  /// articulated-body pass that gave its accelerations (f = I^A a + p^A, Featherstone 2008,
+  /// sec. 7.1: no second pass): a tree without constraint rows (no loop joint, coupler,
+  /// distance or expression constraint, driver, nor joint stop under IDA) whose forward
+  /// dynamics is ABA. Otherwise an inverse-dynamics pass with the constraint loads gives
+  /// them; evaluate_prescribed() (kinematic analysis) always takes that pass.
   bool reactions_from_articulated_pass() const {
     return !model_->has_constraints() && settings_.method == ForwardDynamicsMethod::articulated_body;
   }

@@ -26,7 +26,9 @@ TEST(CheckReport, TheReactionsPassItNamesIsTheOneTheEvaluationTakes) {
       {"cases/drilling.yaml", "solver.dynamics=composite_rigid_body"},         // the same tree by CRBA
       {"cases/c3_regular_waves/h1_passive.yaml", ""},                          // the H1 rig's loop
       {"cases/c2_prescribed_heave/h0_base.yaml", ""},                          // a prescribed heave
-      {"cases/contact/deck_cargo.yaml", ""},                                   // contacts and stops
+      {"cases/contact/deck_cargo.yaml", ""},                                   // contacts, and drivers' rows
+      {"cases/contact/drilling_end_stops.yaml", ""},                           // joint stops as IDA's rows
+      {"cases/contact/drilling_end_stops.yaml", "solver.integrator=contact"},  // the same stops as impulses
   };
   int from_articulated_pass = 0, from_inverse_dynamics = 0;
   for (const ReactionCase& reaction_case : cases) {
@@ -51,9 +53,12 @@ TEST(CheckReport, TheReactionsPassItNamesIsTheOneTheEvaluationTakes) {
                                                    : "reactions (one inverse-dynamics pass per sample)";
     EXPECT_NE(check.output.find(said), std::string::npos) << check.output;
   }
-  // Both kinds among the cases: a test of the claim on one side only could not fail.
-  EXPECT_GE(from_articulated_pass, 1);
-  EXPECT_GE(from_inverse_dynamics, 2);
+  // Both kinds among the cases, as many of each as the cases' structure says: the trees run
+  // by ABA without constraint rows (drilling; the end stops stepped as impulses) and the
+  // rest. The path is chosen by the predicate, so only these counts catch a predicate
+  // that is false where the articulated pass would have served.
+  EXPECT_EQ(from_articulated_pass, 2);
+  EXPECT_EQ(from_inverse_dynamics, 5);
 }
 
 }  // namespace
