@@ -2,14 +2,10 @@
 // pre-drawn random states cycled, no allocation). Run: build/bench/heavesim_bench.
 #include <benchmark/benchmark.h>
 
-#include <cstdlib>  // defines __GLIBC__ where it applies, before the test below
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include <memory>
 #include <random>
 
+#include "cli/process_memory.hpp"
 #include "samples/bench_models.hpp"
 #include "samples/hanging_chain.hpp"
 #include "kernel/algorithms/forward_dynamics.hpp"
@@ -113,17 +109,12 @@ void BM_ABAWithReactions(benchmark::State& state) {
   });
 }
 
-#if defined(__GLIBC__)
-// The whole binary on the two heap thresholds `heavesim` sets (cli/process_memory.cpp),
-// whatever the filter or the order of the benchmarks: blocks below 32 MiB from the heap,
-// not mappings of their own, and a free does not give the heap's top back below 128 MiB.
-// With glibc's defaults (128 KiB each), BM_SetUp from 128 links on gave its pages back
-// every iteration and faulted them in again: 0.67 ms at 128 links instead of 0.08, a step
-// from 64 links that was page faults, not work (docs/performance.md, "Issue #18,
-// twenty-fifth round").
-[[maybe_unused]] const bool heap_thresholds_set =
-    mallopt(M_MMAP_THRESHOLD, 32 << 20) == 1 && mallopt(M_TRIM_THRESHOLD, 128 << 20) == 1;
-#endif
+// The whole binary on the heap `heavesim` runs on (cli/process_memory.cpp), set before
+// main whatever the filter or the order of the benchmarks: with glibc's defaults (128 KiB
+// thresholds), BM_SetUp from 128 links on gave its pages back every iteration and faulted
+// them in again, 0.67 ms at 128 links instead of 0.08, a step from 64 links that was page
+// faults, not work (docs/performance.md, "Issue #18, twenty-fifth round").
+[[maybe_unused]] const bool heap_as_heavesim_sets_it = (back_heap_with_huge_pages(), true);
 
 /// Set-up of an n-link chain as a case builds it: the model through ModelBuilder
 /// (samples::hanging_chain: names, joints, inertias, topology) and its Data (every

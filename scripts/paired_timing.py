@@ -102,7 +102,6 @@ def main():
             return 2
     deadline = time.monotonic() + arguments.timeout
     runs = {label: [] for label in commands}
-    exit_codes = {label: set() for label in commands}
     ended_early = False
     try:
         for _ in range(arguments.warmup):
@@ -112,7 +111,6 @@ def main():
             finished = {label: run_once(command, deadline) for label, command in commands.items()}
             for label, result in finished.items():  # a pair counts only whole
                 runs[label].append(result)
-                exit_codes[label].add(result[4])
     except TimeBound:
         ended_early = True
     except CannotStart as error:
@@ -126,7 +124,7 @@ def main():
     for label in commands:
         if not runs[label]:
             continue
-        print(f"{label}: {shlex.join(commands[label])}   exit codes {sorted(exit_codes[label])}")
+        print(f"{label}: {shlex.join(commands[label])}   exit codes {sorted({run[4] for run in runs[label]})}")
         columns = list(zip(*runs[label]))
         print_row(f"{label} user s", columns[1], 3)
         print_row(f"{label} sys s", columns[2], 3)

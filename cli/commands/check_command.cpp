@@ -55,12 +55,11 @@ int check_command(const std::string& case_path, const std::vector<std::string>& 
   fmt::print(", t = {:g} .. {:g} s, forward dynamics by {}\n", solver.t_start, solver.t_end,
              solver.dynamics == ForwardDynamicsMethod::articulated_body ? "ABA" : "CRBA + Cholesky");
   const OutputSettings& output = definition.output;
+  const char* reactions = scene.system->reactions_from_articulated_pass()
+                              ? " reactions (from each sample's articulated-body pass)"
+                              : " reactions (one inverse-dynamics pass per sample)";
   fmt::print("outputs every {:g} s:{}{}{}{}\n", output.interval, output.bodies ? " bodies" : "",
-             output.joints ? " joints" : "",
-             !output.reactions                                  ? ""
-             : scene.system->reactions_from_articulated_pass() ? " reactions (from each sample's articulated-body pass)"
-                                                                : " reactions (one inverse-dynamics pass per sample)",
-             output.energy ? " energy" : "");
+             output.joints ? " joints" : "", output.reactions ? reactions : "", output.energy ? " energy" : "");
   const std::string in_line = Recorder::why_samples_in_line(definition, scene);
   fmt::print("  samples evaluated {}\n", in_line.empty() ? "beside the integration, on a second build of the scene "
                                                            "(a thread of their own, helped by the integrating one; the result file "
